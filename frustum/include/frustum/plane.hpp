@@ -1,0 +1,43 @@
+// Plane<T>: a x + b y + c z + d = 0, stored as (a, b, c, d).
+//
+// Convention, tested in tests/math: a frustum's planes point INWARD, i.e.
+// distance(p) >= 0 for every point p inside (the centre D is at positive
+// distance from all six). Normalized planes have |(a, b, c)| = 1.
+#pragma once
+
+#include "frustum/types.hpp"
+
+#include <cmath>
+
+namespace frustum {
+
+template <class T>
+struct Plane {
+    Vec4<T> abcd{0};
+
+    Plane() = default;
+    explicit Plane(const Vec4<T>& coefficients) : abcd(coefficients) {}
+    Plane(T a, T b, T c, T d) : abcd(a, b, c, d) {}
+
+    Vec3<T> normal() const { return Vec3<T>(abcd); }
+    T offset() const { return abcd.w; }
+
+    // Signed value at a Euclidean point (a distance when normalized).
+    T distance(const Vec3<T>& p) const { return glm::dot(normal(), p) + abcd.w; }
+    // Value at a homogeneous point (x, y, z, w).
+    T evaluate(const Vec4<T>& p) const { return glm::dot(abcd, p); }
+
+    // Precondition: normal() is not zero (see is_degenerate).
+    Plane normalized() const { return Plane(abcd / glm::length(normal())); }
+    // The same plane, other side positive.
+    Plane flipped() const { return Plane(-abcd); }
+
+    // True when the normal is (relatively) zero: no plane, e.g. the far
+    // plane of an infinite frustum (NOTES.md erratum 9).
+    bool is_degenerate(T relative_tolerance) const {
+        const T n = glm::length(normal());
+        return !(n > relative_tolerance * std::abs(abcd.w)) || !std::isfinite(n);
+    }
+};
+
+} // namespace frustum

@@ -1,0 +1,135 @@
+#include "frustum/mirror.hpp"
+
+#include "frustum/detail/errors.hpp"
+#include "frustum/detail/oblique_clip_core.hpp"
+#include "frustum/projection.hpp"
+#include "frustum/reflect.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+template <class T>
+Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
+    const auto unit = checked_unit_plane(plane, "mirror");
+    if (!unit) {
+        return Error{unit.error()};
+    }
+    auto reflected = reflect(pair, *unit);
+    if (!reflected) {
+        return Error{reflected.error()};
+    }
+    // The plane in the reflected pair's clip space, from the unreflected
+    // inverse: (R M^-1)^T c = M^-T (R^T c) = -(M^-T c), because reflecting a
+    // plane in itself only flips its sign.
+    const Vec4<T> c_clip = -(glm::transpose(pair.inverse()) * unit->abcd);
+    auto clipped = detail::clip_oblique_in_clip_space(*reflected, unit->abcd, c_clip, pair, T(-1), "mirror");
+    if (!clipped) {
+        return Error{clipped.error()};
+    }
+    return clipped;
+}
+
+namespace {
+
+template <class T>
+bool finite3(const Vec3<T>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The camera basis (rows of the view rotation) and near distance.
+template <class T>
+struct MirrorCamera {
+    Vec3<T> i, j, k;
+};
+
+} // namespace
+
+template <class T>
+Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& eye, T far_m, MirrorFit fit,
+                                       DepthRange depth) {
+    if (!finite3(rect.corner) || !finite3(rect.a1) || !finite3(rect.a2) || !finite3(eye) || !std::isfinite(far_m)) {
+        return detail::error_text("mirror_rectangle", "corner, a1, a2, eye and far must be finite",
+                                  "corner=" + detail::vector_text(rect.corner) + " a1=" + detail::vector_text(rect.a1) +
+                                      " a2=" + detail::vector_text(rect.a2) + " eye=" + detail::vector_text(eye) +
+                                      " far=" + detail::number(far_m));
+    }
+    const Vec3<T> normal_unnormalized = glm::cross(rect.a1, rect.a2);
+    const T area = glm::length(normal_unnormalized);
+    const T a1_length = glm::length(rect.a1);
+    if (!(area > T(1e-6) * a1_length * glm::length(rect.a2)) || !(area > T(0))) {
+        return detail::error_text("mirror_rectangle", "rectangle is degenerate (a1 and a2 parallel or zero)",
+                                  "a1=" + detail::vector_text(rect.a1) + " a2=" + detail::vector_text(rect.a2));
+    }
+    // eq. 30: N = unit(a1 x a2), N_w = -N . P1, O' = R(N) O.
+    const Vec3<T> normal = normal_unnormalized / area;
+    const T eye_distance = glm::dot(normal, eye - rect.corner);
+    if (!(std::abs(eye_distance) > T(1e-6) * (a1_length + glm::length(rect.a2)))) {
+        return detail::error<T>("mirror_rectangle", "eye must not lie in the mirror's plane",
+                                {{"eye_distance", eye_distance}});
+    }
+    const Vec3<T> reflected_eye = eye - T(2) * eye_distance * normal;
+    const Vec3<T> corners[4] = {rect.corner, rect.corner + rect.a1, rect.corner + rect.a1 + rect.a2,
+                                rect.corner + rect.a2}; // eq. 29
+
+    MirrorCamera<T> cam;
+    if (fit == MirrorFit::Paper) {
+        const Vec3<T> center = rect.corner + (rect.a1 + rect.a2) / T(2); // eq. 31
+        cam.k = glm::normalize(reflected_eye - center);                  // eq. 32
+        cam.i = glm::normalize(glm::cross(rect.a1, cam.k));              // erratum 13
+        cam.j = glm::cross(cam.k, cam.i);
+    } else {
+        cam.k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
+        cam.j = rect.a1 / a1_length;
+        cam.i = glm::cross(cam.j, cam.k);
+    }
+
+    // Corners in the camera frame: x, y and depth along -k.
+    T x[4], y[4], d[4];
+    for (int c = 0; c < 4; ++c) {
+        const Vec3<T> v = corners[c] - reflected_eye;
+        x[c] = glm::dot(v, cam.i);
+        y[c] = glm::dot(v, cam.j);
+        d[c] = -glm::dot(v, cam.k);
+    }
+    const T near_m = *std::min_element(d, d + 4);
+    if (!(near_m > T(0))) {
+        return detail::error<T>("mirror_rectangle", "every corner must be in front of the reflected eye",
+                                {{"nearest_depth", near_m}});
+    }
+    T left = x[0], right = x[0], bottom = y[0], top = y[0];
+    for (int c = 0; c < 4; ++c) {
+        // Project onto the near plane (the identity for the exact fit).
+        const T px = x[c] * near_m / d[c];
+        const T py = y[c] * near_m / d[c];
+        left = std::min(left, px);
+        right = std::max(right, px);
+        bottom = std::min(bottom, py);
+        top = std::max(top, py);
+    }
+    if (!(far_m > near_m)) {
+        return detail::error<T>("mirror_rectangle", "far must exceed the near distance",
+                                {{"near", near_m}, {"far", far_m}});
+    }
+    auto projection = off_axis(left, right, bottom, top, near_m, std::optional<T>(far_m), depth);
+    if (!projection) {
+        return Error{"frustum::mirror_rectangle(): " + projection.error()};
+    }
+    // eq. 33: view = Q^T shifted to O' (rows i, j, k).
+    Mat3<T> rotation;
+    for (int col = 0; col < 3; ++col) {
+        rotation[col] = Vec3<T>(cam.i[col], cam.j[col], cam.k[col]);
+    }
+    const auto view = RigidTransform<T>::from_rotation_translation(rotation, -(rotation * reflected_eye));
+    return compose(*projection, view);
+}
+
+#define FRUSTUM_INSTANTIATE(T)                                                                     \
+    template Result<MatrixPair<T>> mirror(const MatrixPair<T>&, const Plane<T>&);                  \
+    template Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>&, const Vec3<T>&, T, MirrorFit, \
+                                                    DepthRange);
+FRUSTUM_INSTANTIATE(float)
+FRUSTUM_INSTANTIATE(double)
+
+} // namespace frustum

@@ -1,0 +1,102 @@
+#include "frustum/queries.hpp"
+
+#include <cmath>
+
+namespace frustum {
+
+template <class T>
+FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
+    const Mat4<T>& m = pair.matrix();
+    const Vec4<T> m0 = row(m, 0), m1 = row(m, 1), m2 = row(m, 2), m3 = row(m, 3);
+    const DepthRange depth = pair.depth();
+    const T s = clip_z_span<T>(depth) > T(0) ? T(1) : T(-1);
+    FrustumPlanes<T> p;
+    p.left = Plane<T>(m3 + m0);   // eq. 1: x >= -w
+    p.right = Plane<T>(m3 - m0);  //        x <= w
+    p.bottom = Plane<T>(m3 + m1); //        y >= -w
+    p.top = Plane<T>(m3 - m1);    //        y <= w
+    p.near = Plane<T>(s * (m2 - clip_z_near<T>(depth) * m3)); // z on the near side
+    const Plane<T> far(s * (clip_z_far<T>(depth) * m3 - m2));
+    // An infinite far plane has a (numerically) zero normal: erratum 9.
+    const T scale = glm::length(Vec3<T>(m3)) + glm::length(Vec3<T>(m2));
+    if (glm::length(far.normal()) > T(64) * std::numeric_limits<T>::epsilon() * scale) {
+        p.far = far;
+    }
+    return p;
+}
+
+template <class T>
+FrustumPlanes<T> planes(const MatrixPair<T>& pair) {
+    FrustumPlanes<T> p = raw_planes(pair);
+    p.left = p.left.normalized();
+    p.right = p.right.normalized();
+    p.bottom = p.bottom.normalized();
+    p.top = p.top.normalized();
+    p.near = p.near.normalized();
+    if (p.far) {
+        p.far = p.far->normalized();
+    }
+    return p;
+}
+
+template <class T>
+DivisionPlanes<T> division_planes(const MatrixPair<T>& pair) {
+    const Mat4<T>& m = pair.matrix();
+    const T s = clip_z_span<T>(pair.depth()) > T(0) ? T(1) : T(-1);
+    // eq. 4: Dx = m0, Dy = m1, Dz = m2 - 0.5 m3 (z_mid = 0.5 in the paper's range)
+    return {Plane<T>(row(m, 0)), Plane<T>(row(m, 1)),
+            Plane<T>(s * (row(m, 2) - clip_z_mid<T>(pair.depth()) * row(m, 3)))};
+}
+
+template <class T>
+Vec4<T> clip_corner(int index, DepthRange depth) {
+    // eq. 8 order: (1,1), (-1,1), (-1,-1), (1,-1); near first, then far.
+    static constexpr int xs[4] = {1, -1, -1, 1};
+    static constexpr int ys[4] = {1, 1, -1, -1};
+    const T z = index < 4 ? clip_z_near<T>(depth) : clip_z_far<T>(depth);
+    return Vec4<T>(T(xs[index % 4]), T(ys[index % 4]), z, T(1));
+}
+
+template <class T>
+KeyPoints<T> key_points(const MatrixPair<T>& pair) {
+    const Mat4<T>& inv = pair.inverse();
+    KeyPoints<T> k;
+    for (int i = 0; i < 8; ++i) {
+        const Vec4<T> c = clip_corner<T>(i, pair.depth());
+        // eq. 8: C = x m0' + y m1' + z m2' + m3' (sums of inverse columns)
+        k.corners[i] = c.x * inv[0] + c.y * inv[1] + c.z * inv[2] + inv[3];
+    }
+    k.center = clip_z_mid<T>(pair.depth()) * inv[2] + inv[3]; // eq. 8: D = 0.5 m2' + m3'
+    // eq. 7: O = k m2' for any k != 0 (erratum 15). We pick the sign that puts
+    // the eye on the near plane's negative side: a finite eye gets w > 0 and
+    // an eye at infinity (orthographic) points back, away from the frustum.
+    k.eye = glm::dot(raw_planes(pair).near.abcd, inv[2]) > T(0) ? -inv[2] : inv[2];
+    k.vanishing_y = inv[1]; // eq. 7: O1 = m1'
+    k.vanishing_x = inv[0]; // eq. 7: O2 = m0'
+    return k;
+}
+
+template <class T>
+Vec4<T> to_point(const Vec4<T>& h, T relative_tolerance) {
+    const Vec3<T> xyz(h);
+    const T length = glm::length(xyz);
+    if (std::abs(h.w) > relative_tolerance * length && h.w != T(0)) {
+        return Vec4<T>(xyz / h.w, T(1));
+    }
+    if (length == T(0)) {
+        return Vec4<T>(T(0));
+    }
+    return Vec4<T>(xyz / length, T(0));
+}
+
+#define FRUSTUM_INSTANTIATE(T)                                              \
+    template FrustumPlanes<T> raw_planes(const MatrixPair<T>&);             \
+    template FrustumPlanes<T> planes(const MatrixPair<T>&);                 \
+    template DivisionPlanes<T> division_planes(const MatrixPair<T>&);       \
+    template Vec4<T> clip_corner<T>(int, DepthRange);                       \
+    template KeyPoints<T> key_points(const MatrixPair<T>&);                 \
+    template Vec4<T> to_point(const Vec4<T>&, T);
+FRUSTUM_INSTANTIATE(float)
+FRUSTUM_INSTANTIATE(double)
+
+} // namespace frustum

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project builds and tests with.
+# Idempotent: asks apt only for what is missing; uses sudo only when not root.
+set -euo pipefail
+
+packages=(
+  cmake make g++ pkg-config
+  libglm-dev            # vector/matrix math for frustum/
+  nlohmann-json3-dev    # JSON for frustum-vectors (tinygltf uses it too)
+  libtinygltf-dev       # glTF 2.0 loading
+  libstb-dev            # stb_image_write for PNG output
+  doctest-dev           # unit tests
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless + GLES 3
+  libosmesa6-dev        # OSMesa offscreen fallback
+  libglfw3-dev          # desktop window
+  libbenchmark-dev      # Google Benchmark (bench targets)
+)
+if [ "${1:-}" = "--window" ]; then packages+=(xvfb x11-apps imagemagick); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
