@@ -1,0 +1,51 @@
+// Paper §5.4: lens refraction in tile-based rendering. The image is split
+// into tiles; each tile's corners on the refraction plane are moved by the
+// lens law (eq. 34) and the tile is rendered through the frustum whose near
+// plane is the refraction plane and whose side planes pass through the eye
+// and the moved corners (the §4 construction, analytic inverse). Inside the
+// lens radius the moved quads shrink (magnification), outside they grow
+// (barrel distortion). Shared corners move alike, so tiles stay seamless.
+#pragma once
+
+#include "frustum/crop.hpp"
+#include "frustum/matrix_pair.hpp"
+#include "frustum/result.hpp"
+
+#include <vector>
+
+namespace frustum {
+
+// A lens on the refraction plane, which is the camera's near plane. Its
+// coordinates are metres in that plane, origin at the centre of the near
+// rectangle, x towards its right edge, y towards its top edge.
+template <class T>
+struct Lens {
+    Vec2<T> center_m{T(0)}; // C
+    T radius_m = T(1);      // R > 0
+    T power = T(2);         // p > 0; p > 1 magnifies inside R, p < 1 shrinks
+};
+
+// eq. 34: v = X - C, r = |v| / R, X' = C + R r^p v / |v| (X' = C at C).
+template <class T>
+Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens);
+
+// The near-plane frame of a perspective camera: centre, unit axes and half
+// sizes (metres), from its near corners C1..C4 (§3.2).
+template <class T>
+struct NearPlaneFrame {
+    Vec3<T> center, x_axis, y_axis, eye;
+    T half_width_m, half_height_m;
+    Vec3<T> point(const Vec2<T>& plane_m) const { return center + plane_m.x * x_axis + plane_m.y * y_axis; }
+};
+template <class T>
+Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera);
+
+// Tiles of a width_px x height_px image in the crop_tiles() layout, each
+// with its lens frustum. Far point of a tile: its moved centre pushed out to
+// the camera's far distance (the camera must be perspective with a finite
+// far plane, without an oblique near plane).
+template <class T>
+Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
+                                        int height_px, int columns, int rows);
+
+} // namespace frustum

@@ -1,0 +1,114 @@
+// Paper §5.4: lens refraction tiles.
+#include "support.hpp"
+
+using namespace frustum;
+
+namespace {
+
+MatrixPair<double> lens_camera(DepthRange depth) {
+    const auto projection = perspective(1.0, 1.5, 0.5, std::optional<double>(50.0), depth);
+    const auto view = look_at(glm::dvec3(1, 2, 5), glm::dvec3(0, 0, 0), glm::dvec3(0, 1, 0));
+    return compose(*projection, *view);
+}
+
+// Max |a - s b| / |s| over entries, s fitted on the largest entry of b:
+// "equal up to a positive factor".
+double factor_deviation(const glm::dmat4& a, const glm::dmat4& b, double* factor) {
+    int best_c = 0, best_r = 0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (std::abs(b[c][r]) > std::abs(b[best_c][best_r])) best_c = c, best_r = r;
+    const double s = a[best_c][best_r] / b[best_c][best_r];
+    *factor = s;
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) worst = std::max(worst, std::abs(a[c][r] - s * b[c][r]) / std::abs(s));
+    return worst;
+}
+
+} // namespace
+
+TEST_SUITE("math") {
+
+TEST_CASE("lens_warp follows eq. 34: points inside R approach C for p > 1, outside move away") {
+    const Lens<double> lens{glm::dvec2(0.1, -0.2), 0.5, 2.0};
+    // r = 0.5: |v| = 0.25 -> R r^2 = 0.125 along the same direction.
+    const glm::dvec2 inside = lens_warp(glm::dvec2(0.1 + 0.25, -0.2), lens);
+    CHECK(inside.x == doctest::Approx(0.1 + 0.125));
+    CHECK(inside.y == doctest::Approx(-0.2));
+    // r = 2: |v| = 1 -> R r^2 = 2.
+    const glm::dvec2 outside = lens_warp(glm::dvec2(0.1, -0.2 + 1.0), lens);
+    CHECK(outside.y == doctest::Approx(-0.2 + 2.0));
+    // On the rim and at the centre nothing moves.
+    CHECK(lens_warp(glm::dvec2(0.1 + 0.5, -0.2), lens).x == doctest::Approx(0.6));
+    CHECK(lens_warp(lens.center_m, lens) == lens.center_m);
+}
+
+TEST_CASE("lens tiles with power 1 are exactly the crop tiles (up to a positive factor)") {
+    for (DepthRange depth : mtest::all_depth_ranges) {
+        CAPTURE(depth);
+        const auto camera = lens_camera(depth);
+        const Lens<double> identity_lens{glm::dvec2(0.05, 0.0), 0.15, 1.0};
+        const auto lens = lens_tiles(camera, identity_lens, 64, 48, 4, 3);
+        const auto crops = crop_tiles(camera, 64, 48, 4, 3);
+        REQUIRE(lens.ok());
+        REQUIRE(crops.ok());
+        REQUIRE(lens->size() == crops->size());
+        for (std::size_t i = 0; i < lens->size(); ++i) {
+            double factor = 0.0;
+            CHECK(factor_deviation((*lens)[i].pair.matrix(), (*crops)[i].pair.matrix(), &factor) < 1e-9);
+            CHECK(factor > 0.0);
+            CHECK(mtest::inverse_residual((*lens)[i].pair) < 1e-12);
+        }
+    }
+}
+
+TEST_CASE("lens tiles magnify inside the radius and keep shared corners seamless") {
+    const auto camera = lens_camera(DepthRange::ZeroToOne);
+    const auto frame = near_plane_frame(camera);
+    REQUIRE(frame.ok());
+    const Lens<double> lens{glm::dvec2(0.0, 0.0), 0.6 * frame->half_height_m, 2.0};
+    const int columns = 8, rows = 8;
+    const auto tiles = lens_tiles(camera, lens, 256, 256, columns, rows);
+    REQUIRE(tiles.ok());
+    const auto near_area = [&](const Tile<double>& t) {
+        const auto k = key_points(t.pair);
+        const glm::dvec3 c1(to_point(k.corners[0], 1e-12)), c2(to_point(k.corners[1], 1e-12)),
+            c3(to_point(k.corners[2], 1e-12));
+        return glm::length(c1 - c2) * glm::length(c2 - c3);
+    };
+    const auto plain = crop_tiles(camera, 256, 256, columns, rows);
+    // A central tile sees a smaller patch of the refraction plane than
+    // without the lens (magnification); a corner tile (outside R) a larger one.
+    const auto& centre = (*tiles)[3 * columns + 3];
+    const auto& corner = (*tiles)[0];
+    CHECK(near_area(centre) < 0.8 * near_area((*plain)[3 * columns + 3]));
+    CHECK(near_area(corner) > 1.2 * near_area((*plain)[0]));
+    // Neighbours share their moved corner: tile (0,0)'s C1 (top right of its
+    // near face) is tile (1,1)'s C3 (bottom left).
+    const auto a = to_point(key_points((*tiles)[0].pair).corners[0], 1e-12);
+    const auto b = to_point(key_points((*tiles)[columns + 1].pair).corners[2], 1e-12);
+    CHECK(mtest::max_diff(a, b) < 1e-12);
+    for (const auto& t : *tiles) {
+        CHECK(mtest::inverse_residual(t.pair) < 1e-12);
+    }
+}
+
+TEST_CASE("lens_tiles rejects bad lenses and cameras") {
+    const auto camera = lens_camera(DepthRange::ZeroToOne);
+    const auto zero_radius = lens_tiles(camera, Lens<double>{glm::dvec2(0.0), 0.0, 2.0}, 64, 64, 2, 2);
+    CHECK_FALSE(zero_radius.ok());
+    CHECK(zero_radius.error().find("radius > 0") != std::string::npos);
+    const auto nan_power = lens_tiles(camera, Lens<double>{glm::dvec2(0.0), 1.0, std::nan("")}, 64, 64, 2, 2);
+    CHECK_FALSE(nan_power.ok());
+    const auto ortho = orthographic(-1.0, 1.0, -1.0, 1.0, 0.1, 10.0, DepthRange::ZeroToOne);
+    const auto no_eye = lens_tiles(*ortho, Lens<double>{glm::dvec2(0.0), 0.5, 2.0}, 64, 64, 2, 2);
+    CHECK_FALSE(no_eye.ok());
+    CHECK(no_eye.error().find("perspective") != std::string::npos);
+    const auto infinite = perspective(1.0, 1.0, 0.1, std::optional<double>(), DepthRange::ZeroToOne);
+    const auto no_far = lens_tiles(*infinite, Lens<double>{glm::dvec2(0.0), 0.05, 2.0}, 64, 64, 2, 2);
+    CHECK_FALSE(no_far.ok());
+    CHECK(no_far.error().find("finite far plane") != std::string::npos);
+}
+
+} // TEST_SUITE
