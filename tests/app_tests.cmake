@@ -8,3 +8,4 @@ endforeach()
 frustum_test_suite(scene frustum::frustum ${_app_libs})
 frustum_test_suite(gl frustum::frustum ${_app_libs})
 frustum_test_suite(cli frustum::frustum ${_app_libs})
+include(${CMAKE_CURRENT_SOURCE_DIR}/robustness/suite.cmake) # frustum_test_suite(robustness ...) + tool paths

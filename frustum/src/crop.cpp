@@ -27,7 +27,7 @@ MatrixPair<T> scale_offset_xy(const MatrixPair<T>& pair, T sx, T tx, T sy, T ty)
     inv[0] = pair.inverse()[0] * inv_sx;
     inv[1] = pair.inverse()[1] * inv_sy;
     inv[3] = pair.inverse()[3] - (tx * inv_sx) * pair.inverse()[0] - (ty * inv_sy) * pair.inverse()[1];
-    return detail::PairFactory::make(m, inv, pair.depth(), pair.flips_winding());
+    return detail::PairFactory::keep_sign(m, inv, pair.depth(), pair.flips_winding());
 }
 
 template <class T>

@@ -109,7 +109,7 @@ Result<MatrixPair<T>> assemble(const SideRows<T>& rows, T k_near, DepthRange dep
         return detail::error<T>(function, "planes give a degenerate frustum (far plane through the eye)",
                                 {{"K_n", k_near}});
     }
-    return detail::PairFactory::make(m, *inv, depth, false);
+    return detail::PairFactory::keep_sign(m, *inv, depth, false);
 }
 
 // The corrected §4.2 stop test: every far corner finite and in front.

@@ -18,7 +18,7 @@ MatrixPair<T> MatrixPair<T>::with_depth_range(DepthRange target) const {
     Mat4<T> inv = inverse_;
     inv[2] = inverse_[2] / a;
     inv[3] = inverse_[3] - (b / a) * inverse_[2];
-    return detail::PairFactory::make(m, inv, target, flips_winding());
+    return detail::PairFactory::keep_sign(m, inv, target, flips_winding());
 }
 
 template class MatrixPair<float>;

@@ -3,10 +3,12 @@
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/projection.hpp"
+#include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace frustum {
 
@@ -24,6 +26,18 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     // inverse: (R M^-1)^T c = M^-T (R^T c) = -(M^-T c), because reflecting a
     // plane in itself only flips its sign.
     const Vec4<T> c_clip = -(glm::transpose(pair.inverse()) * unit->abcd);
+    // The real eye must be in front of the mirror (its reflection then lies
+    // behind the clip plane): say so in the mirror's terms.
+    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip.z;
+    const T floor = T(64) * std::numeric_limits<T>::epsilon() * glm::length(pair.inverse()[2]);
+    if (!(eye_side > floor)) {
+        const Vec4<T> eye = to_point(pair.inverse()[2], infinity_tolerance<T>());
+        const std::string where = eye.w == T(1) ? " eye_distance=" + detail::number(unit->distance(Vec3<T>(eye))) : "";
+        return detail::error_text("mirror",
+                                  std::abs(eye_side) <= floor ? "mirror plane must not pass through the eye"
+                                                              : "the eye must be on the mirror plane's positive (front) side",
+                                  "plane=" + detail::vector_text(unit->abcd) + where);
+    }
     auto clipped = detail::clip_oblique_in_clip_space(*reflected, unit->abcd, c_clip, pair, T(-1), "mirror");
     if (!clipped) {
         return Error{clipped.error()};
@@ -98,7 +112,7 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
         return detail::error<T>("mirror_rectangle", "every corner must be in front of the reflected eye",
                                 {{"nearest_depth", near_m}});
     }
-    T left = x[0], right = x[0], bottom = y[0], top = y[0];
+    T left = std::numeric_limits<T>::infinity(), right = -left, bottom = left, top = -left;
     for (int c = 0; c < 4; ++c) {
         // Project onto the near plane (the identity for the exact fit).
         const T px = x[c] * near_m / d[c];

@@ -69,7 +69,7 @@ Result<MatrixPair<T>> clip_oblique_in_clip_space(const MatrixPair<T>& pair, cons
     inv_new[1] = inv[1] - (x.y * inv_x2) * inv[2];
     inv_new[2] = inv[2] * inv_x2;
     inv_new[3] = inv[3] - (x.w * inv_x2) * inv[2];
-    return PairFactory::make(m, inv_new, depth, pair.flips_winding());
+    return PairFactory::keep_sign(m, inv_new, depth, pair.flips_winding());
 }
 
 template Result<MatrixPair<float>> clip_oblique_in_clip_space(const MatrixPair<float>&, const Vec4<float>&,

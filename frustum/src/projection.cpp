@@ -47,13 +47,22 @@ Result<MatrixPair<T>> perspective(T fovy_rad, T aspect, T near_m, std::optional<
     if (!finite(near_m) || !(near_m > T(0))) {
         return detail::error<T>("perspective", "near must be > 0 and finite", {{"near", near_m}});
     }
+    if (far_m && (!finite(*far_m) || !(*far_m > near_m))) {
+        return detail::error<T>("perspective", "far must be finite and > near (or infinite_far)",
+                                {{"near", near_m}, {"far", *far_m}});
+    }
     const T top = near_m * std::tan(fovy_rad / T(2));
     const T right = top * aspect;
     if (!finite(top) || !finite(right) || !(right > T(0))) {
         return detail::error<T>("perspective", "near-plane half size is not finite and positive",
                                 {{"top", top}, {"right", right}});
     }
-    return off_axis(-right, right, -top, top, near_m, far_m, depth);
+    auto pair = off_axis(-right, right, -top, top, near_m, far_m, depth);
+    if (!pair) {
+        // Only representability can fail here; say which call the user made.
+        return Error{"frustum::perspective(): " + pair.error()};
+    }
+    return pair;
 }
 
 template <class T>
@@ -79,7 +88,12 @@ Result<MatrixPair<T>> off_axis(T left, T right, T bottom, T top, T near_m, std::
     const T cx = (right + left) / (right - left);
     const T cy = (top + bottom) / (top - bottom);
     const auto [a, b] = perspective_depth(near_m, far_m, depth);
-    if (!finite(sx) || !finite(sy) || !finite(a) || !finite(b) || b == T(0)) {
+    // Every entry of both matrices must be representable: reject underflow
+    // to 0 (1/sx) as well as overflow.
+    const T min_normal = std::numeric_limits<T>::min();
+    if (!finite(sx) || !finite(sy) || !finite(cx) || !finite(cy) || !finite(a) || !finite(b) ||
+        !(sx > min_normal) || !(sy > min_normal) || !(std::abs(b) > min_normal) || !finite(T(1) / sx) ||
+        !finite(T(1) / sy) || !finite(T(1) / b) || !finite(cx / sx) || !finite(cy / sy) || !finite(a / b)) {
         return detail::error<T>("off_axis", "frustum too thin or too deep to represent",
                                 {{"near", near_m}, {"far", far_m.value_or(std::numeric_limits<T>::infinity())}});
     }
@@ -127,7 +141,10 @@ Result<MatrixPair<T>> orthographic(T left, T right, T bottom, T top, T near_m, T
     // clip z = A z_eye + B with z_eye = -near -> zn, -far -> zf.
     const T a = -(zf - zn) / (far_m - near_m);
     const T b = zn + a * near_m;
-    if (!finite(sx) || !finite(sy) || !finite(a) || a == T(0)) {
+    const T min_normal = std::numeric_limits<T>::min();
+    if (!finite(sx) || !finite(sy) || !finite(a) || !finite(b) || !finite(tx) || !finite(ty) ||
+        !(sx > min_normal) || !(sy > min_normal) || !(std::abs(a) > min_normal) || !finite(T(1) / sx) ||
+        !finite(T(1) / sy) || !finite(T(1) / a) || !finite(tx / sx) || !finite(ty / sy) || !finite(b / a)) {
         return detail::error<T>("orthographic", "box too thin to represent",
                                 {{"near", near_m}, {"far", far_m}});
     }
@@ -174,6 +191,10 @@ Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, con
     if (!(distance > T(0))) {
         return detail::error_text("look_at", "eye must differ from target", "eye=" + detail::vector_text(eye));
     }
+    if (!finite(distance)) {
+        return detail::error_text("look_at", "eye and target are too far apart to represent",
+                                  "eye=" + detail::vector_text(eye) + " target=" + detail::vector_text(target));
+    }
     const Vec3<T> forward = forward_unnormalized / distance;
     const Vec3<T> side_unnormalized = glm::cross(forward, up);
     const T side_length = glm::length(side_unnormalized);
@@ -194,7 +215,7 @@ Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, con
 
 template <class T>
 MatrixPair<T> compose(const MatrixPair<T>& projection, const RigidTransform<T>& view) {
-    return detail::PairFactory::make(Mat4<T>(projection.matrix() * view.matrix),
+    return detail::PairFactory::keep_sign(Mat4<T>(projection.matrix() * view.matrix),
                                      Mat4<T>(view.inverse * projection.inverse()), projection.depth(),
                                      projection.flips_winding());
 }

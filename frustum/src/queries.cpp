@@ -1,5 +1,6 @@
 #include "frustum/queries.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frustum {
@@ -78,13 +79,17 @@ KeyPoints<T> key_points(const MatrixPair<T>& pair) {
 
 template <class T>
 Vec4<T> to_point(const Vec4<T>& h, T relative_tolerance) {
-    const Vec3<T> xyz(h);
-    const T length = glm::length(xyz);
-    if (std::abs(h.w) > relative_tolerance * length && h.w != T(0)) {
-        return Vec4<T>(xyz / h.w, T(1));
-    }
-    if (length == T(0)) {
+    // Scale by the largest magnitude first so |xyz| neither overflows nor
+    // underflows; the point it denotes is unchanged.
+    const T largest = std::max(std::max(std::abs(h.x), std::abs(h.y)), std::max(std::abs(h.z), std::abs(h.w)));
+    if (!(largest > T(0))) {
         return Vec4<T>(T(0));
+    }
+    const Vec4<T> s = h / largest;
+    const Vec3<T> xyz(s);
+    const T length = glm::length(xyz);
+    if (std::abs(s.w) > relative_tolerance * length && s.w != T(0)) {
+        return Vec4<T>(xyz / s.w, T(1)); // may overflow to inf for a point near infinity
     }
     return Vec4<T>(xyz / length, T(0));
 }

@@ -76,7 +76,7 @@ Result<MatrixPair<T>> reflect(const MatrixPair<T>& pair, const Plane<T>& plane) 
     for (int j = 0; j < 4; ++j) {
         inv[j] -= (T(2) * glm::dot(c, pair.inverse()[j])) * n;
     }
-    return detail::PairFactory::make(m, inv, pair.depth(), !pair.flips_winding());
+    return detail::PairFactory::keep_sign(m, inv, pair.depth(), !pair.flips_winding());
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                    \

@@ -57,8 +57,12 @@ TEST_CASE("the zero-denominator set exists and to_clip refuses it") {
         const glm::dvec3 p(0.0, 0.0, -5.0 + 35.0 * i / 4000.0);
         if (f.denominators(previous).x * f.denominators(p).x <= 0.0) {
             found = true;
-            CHECK_FALSE(f.to_clip(p, 1e-3).has_value());
-            CHECK_FALSE(f.to_clip(previous, 1e-3).has_value());
+            // Near the root |d_l + d_r| < guard: refused on both sides.
+            const glm::dvec3 middle = (p + previous) / 2.0;
+            CHECK(std::abs(f.denominators(middle).x) < 1e-2);
+            CHECK_FALSE(f.to_clip(p, 1e-2).has_value());
+            CHECK_FALSE(f.to_clip(middle, 1e-2).has_value());
+            CHECK(f.to_clip(glm::dvec3(0.0, 0.0, -5.0), 1e-2).has_value());
         }
         previous = p;
     }

@@ -20,8 +20,10 @@ namespace frustum {
 //   inv_new col 2 = inv col 2 / X_2,
 //   inv_new col j = inv col j - (X_j / X_2) inv col 2   (j = 0, 1, 3)
 // which is the paper's T^-1 (eq. 26-27) transposed. The far plane then
-// passes through Q; with an infinite far plane Q is a direction and the new
-// far plane is finite.
+// passes through Q; with an infinite far plane Q is a direction, and the new
+// far plane is finite unless the clip plane is parallel to the old near
+// plane (then it stays infinite). Row 3 (clip w) is unchanged, so the pair
+// keeps its sign: w > 0 on the visible side.
 template <class T>
 Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane);
 

@@ -7,6 +7,7 @@
 
 #include "frustum/types.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frustum {
@@ -27,8 +28,22 @@ struct Plane {
     // Value at a homogeneous point (x, y, z, w).
     T evaluate(const Vec4<T>& p) const { return glm::dot(abcd, p); }
 
-    // Precondition: normal() is not zero (see is_degenerate).
-    Plane normalized() const { return Plane(abcd / glm::length(normal())); }
+    // |normal| = 1, computed without overflow or underflow (the coefficients
+    // are first scaled by their largest magnitude). A plane at infinity (zero
+    // normal, d != 0) comes back as (0, 0, 0, sign d); the zero plane stays zero.
+    Plane normalized() const {
+        const T largest = std::max(std::max(std::abs(abcd.x), std::abs(abcd.y)),
+                                   std::max(std::abs(abcd.z), std::abs(abcd.w)));
+        if (!(largest > T(0))) {
+            return *this;
+        }
+        const Vec4<T> scaled = abcd / largest;
+        const T length = glm::length(Vec3<T>(scaled));
+        if (!(length > T(0))) {
+            return Plane(Vec4<T>(T(0), T(0), T(0), scaled.w > T(0) ? T(1) : T(-1)));
+        }
+        return Plane(scaled / length);
+    }
     // The same plane, other side positive.
     Plane flipped() const { return Plane(-abcd); }
 

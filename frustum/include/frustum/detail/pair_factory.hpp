@@ -1,6 +1,7 @@
 // The one funnel through which every MatrixPair is made (STYLE.md habit 4):
 // it stores matrix, inverse and depth range together and applies the sign
-// convention (w > 0 inside). Internal: only constructors and operations of
+// convention (w > 0 inside): decided once by make() when a frustum is born,
+// kept by keep_sign() through every operation after that. Internal: only constructors and operations of
 // this library call it, each with an inverse it derived in closed form.
 #pragma once
 
@@ -9,10 +10,11 @@
 namespace frustum::detail {
 
 struct PairFactory {
+    // For constructors and imported matrices: the clip point just inside the
+    // centre of the near face, taken back to world space, must have w > 0;
+    // else both matrices are negated.
     template <class T>
     static MatrixPair<T> make(const Mat4<T>& m, const Mat4<T>& inv, DepthRange depth, bool flips_winding) {
-        // The clip point just inside the centre of the near face, taken back
-        // to world space: its w must be positive, else negate both matrices.
         const T z_near = clip_z_near<T>(depth);
         const T z_inside = z_near + T(0.01) * clip_z_span<T>(depth);
         const T w_world = inv[2][3] * z_inside + inv[3][3];
@@ -22,6 +24,17 @@ struct PairFactory {
             pair.inverse_ = -pair.inverse_;
         }
         return pair;
+    }
+
+    // For operations that keep row 3 of M (the clip w) up to a positive
+    // factor: crop, reflect, clip_oblique, depth-range changes, a rigid view,
+    // and pairs built from inward planes. Their sign is already right, and
+    // re-deciding it from the near-face centre would be wrong after an
+    // oblique clip whose plane crosses the view axis behind the eye (that
+    // centre is then behind the eye, where w < 0 is correct).
+    template <class T>
+    static MatrixPair<T> keep_sign(const Mat4<T>& m, const Mat4<T>& inv, DepthRange depth, bool flips_winding) {
+        return MatrixPair<T>(m, inv, depth, flips_winding);
     }
 };
 

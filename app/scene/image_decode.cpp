@@ -1,0 +1,45 @@
+#include "image_decode.hpp"
+
+#include <stb_image.h>
+
+#include <climits>
+#include <memory>
+#include <string>
+
+namespace scene::detail {
+
+frustum::Result<Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_bytes,
+                                    std::uint64_t max_pixels) {
+    using frustum::Error;
+    if (size_bytes == 0) {
+        return Error{"no image bytes"};
+    }
+    if (size_bytes > static_cast<std::size_t>(INT_MAX)) {
+        return Error{"encoded image has " + std::to_string(size_bytes) +
+                     " bytes, more than stb_image accepts"};
+    }
+    const int length = static_cast<int>(size_bytes);
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+        return Error{std::string("cannot decode the image header: ") + stbi_failure_reason()};
+    }
+    const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+    if (width <= 0 || height <= 0 || pixels > max_pixels) {
+        return Error{"image is " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels, the limit is " + std::to_string(max_pixels) + " pixels"};
+    }
+    stbi_set_flip_vertically_on_load_thread(0);
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels_rgba(
+        stbi_load_from_memory(bytes, length, &width, &height, &channels, 4), &stbi_image_free);
+    if (!pixels_rgba) {
+        return Error{std::string("cannot decode the image: ") + stbi_failure_reason()};
+    }
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgba.assign(pixels_rgba.get(),
+                      pixels_rgba.get() + std::size_t(width) * std::size_t(height) * 4);
+    return image;
+}
+
+} // namespace scene::detail

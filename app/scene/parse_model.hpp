@@ -1,0 +1,23 @@
+// tinygltf parse with the sandboxed file callbacks and our image decoder.
+#pragma once
+
+#include "fs_sandbox.hpp"
+
+#include <frustum/result.hpp>
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace scene::detail {
+
+// `file_bytes` is the whole .gltf or .glb file, already through check_glb()
+// (GLB), check_json_depth() and check_json_and_uris(). On success every
+// image of the model is decoded to RGBA8 (component 4, bits 8). tinygltf's
+// warnings are dropped; its errors (and exceptions) become the error.
+frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& file_bytes,
+                                             bool is_glb, FsSandbox& sandbox,
+                                             std::uint64_t max_image_pixels);
+
+} // namespace scene::detail

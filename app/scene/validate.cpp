@@ -1,0 +1,113 @@
+#include "validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace scene::detail {
+
+namespace {
+
+using frustum::Error;
+using frustum::Status;
+
+Status check_texture_ref(const tinygltf::Model& model, const std::string& label, const char* slot,
+                         int texture, int tex_coord) {
+    if (texture < -1 || texture >= static_cast<int>(model.textures.size())) {
+        return Error{label + " " + slot + " uses texture " + std::to_string(texture) +
+                     " but the file has " + std::to_string(model.textures.size()) + " textures"};
+    }
+    if (tex_coord < 0) {
+        return Error{label + " " + slot + " has texCoord " + std::to_string(tex_coord) +
+                     ", expected >= 0"};
+    }
+    return {};
+}
+
+Status validate_material(const tinygltf::Model& model, int index) {
+    const tinygltf::Material& material = model.materials[index];
+    const std::string label = "material " + std::to_string(index);
+    const auto& pbr = material.pbrMetallicRoughness;
+    for (double factor : pbr.baseColorFactor) {
+        if (!std::isfinite(factor)) {
+            return Error{label + " baseColorFactor has a non-finite element"};
+        }
+    }
+    Status checks[] = {
+        check_texture_ref(model, label, "baseColorTexture", pbr.baseColorTexture.index,
+                          pbr.baseColorTexture.texCoord),
+        check_texture_ref(model, label, "metallicRoughnessTexture",
+                          pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord),
+        check_texture_ref(model, label, "normalTexture", material.normalTexture.index,
+                          material.normalTexture.texCoord),
+        check_texture_ref(model, label, "occlusionTexture", material.occlusionTexture.index,
+                          material.occlusionTexture.texCoord),
+        check_texture_ref(model, label, "emissiveTexture", material.emissiveTexture.index,
+                          material.emissiveTexture.texCoord),
+    };
+    for (Status& status : checks) {
+        if (!status) {
+            return status;
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+Status validate_required_extensions(const tinygltf::Model& model) {
+    if (!model.extensionsRequired.empty()) {
+        return Error{"the file requires extension \"" + model.extensionsRequired.front() +
+                     "\", which is not supported"};
+    }
+    return {};
+}
+
+Status validate_images_textures_materials(const tinygltf::Model& model) {
+    for (std::size_t i = 0; i < model.images.size(); ++i) {
+        const tinygltf::Image& image = model.images[i];
+        const std::uint64_t expected_bytes =
+            std::uint64_t(std::max(image.width, 0)) * std::uint64_t(std::max(image.height, 0)) * 4;
+        if (image.width <= 0 || image.height <= 0 || image.component != 4 || image.bits != 8 ||
+            image.image.size() != expected_bytes) {
+            return Error{"image " + std::to_string(i) + " holds " + std::to_string(image.image.size()) +
+                         " bytes for " + std::to_string(image.width) + " x " +
+                         std::to_string(image.height) + " pixels of " + std::to_string(image.component) +
+                         " x " + std::to_string(image.bits) + " bits, expected RGBA8"};
+        }
+    }
+    for (std::size_t t = 0; t < model.textures.size(); ++t) {
+        const tinygltf::Texture& texture = model.textures[t];
+        const std::string label = "texture " + std::to_string(t);
+        if (texture.source < -1 || texture.source >= static_cast<int>(model.images.size())) {
+            return Error{label + " uses image " + std::to_string(texture.source) +
+                         " but the file has " + std::to_string(model.images.size()) + " images"};
+        }
+        if (texture.sampler < -1 || texture.sampler >= static_cast<int>(model.samplers.size())) {
+            return Error{label + " uses sampler " + std::to_string(texture.sampler) +
+                         " but the file has " + std::to_string(model.samplers.size()) + " samplers"};
+        }
+    }
+    for (std::size_t m = 0; m < model.materials.size(); ++m) {
+        if (Status status = validate_material(model, static_cast<int>(m)); !status) {
+            return status;
+        }
+    }
+    return {};
+}
+
+Status validate_model(const tinygltf::Model& model) {
+    using Check = Status (*)(const tinygltf::Model&);
+    const Check checks[] = {validate_required_extensions, validate_buffer_views,
+                            validate_accessors, validate_meshes, validate_images_textures_materials,
+                            validate_nodes, validate_scenes, validate_cameras};
+    for (Check check : checks) {
+        if (Status status = check(model); !status) {
+            return status;
+        }
+    }
+    return {};
+}
+
+} // namespace scene::detail

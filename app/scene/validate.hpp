@@ -1,0 +1,36 @@
+// Structural checks on a parsed tinygltf model. After validate_model() passes,
+// every index used by build_scene is in range and every accessor's bytes lie
+// inside its bufferView and buffer, so reading needs no further range checks
+// except on values read from the file (index values, sparse indices).
+#pragma once
+
+#include <frustum/result.hpp>
+
+#include <tiny_gltf.h>
+
+namespace scene::detail {
+
+// Runs all of the checks below, in this order.
+frustum::Status validate_model(const tinygltf::Model& model);
+
+// validate_accessors.cpp: bufferView ranges and strides, then accessors
+// (component type, count, normalized, byte range, alignment, sparse parts).
+frustum::Status validate_buffer_views(const tinygltf::Model& model);
+frustum::Status validate_accessors(const tinygltf::Model& model);
+
+// validate_meshes.cpp: primitive modes, attribute formats and counts,
+// index accessors, material indices, morph-target accessor indices.
+frustum::Status validate_meshes(const tinygltf::Model& model);
+
+// validate.cpp: extensionsRequired (none is supported), images (decoded
+// size), textures and material texture indices.
+frustum::Status validate_required_extensions(const tinygltf::Model& model);
+frustum::Status validate_images_textures_materials(const tinygltf::Model& model);
+
+// validate_nodes.cpp: node indices and TRS/matrix sizes, the node forest
+// (no cycles, one parent each), scenes, and camera parameters.
+frustum::Status validate_nodes(const tinygltf::Model& model);
+frustum::Status validate_scenes(const tinygltf::Model& model);
+frustum::Status validate_cameras(const tinygltf::Model& model);
+
+} // namespace scene::detail

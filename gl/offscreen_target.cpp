@@ -1,0 +1,154 @@
+#include "gl/offscreen_target.hpp"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace gl {
+namespace {
+
+constexpr const char* kCreate = "gl::OffscreenTarget::create()";
+
+std::string size_text(int width, int height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+frustum::Status check_size(const Functions& fn, const OffscreenTargetOptions& options) {
+    const int w = options.width;
+    const int h = options.height;
+    if (w < 1 || h < 1) {
+        return frustum::Error{std::string(kCreate) + ": width and height must be >= 1, got " +
+                              size_text(w, h)};
+    }
+    struct Limit {
+        GLenum name;
+        const char* text;
+        bool applies;
+    };
+    const Limit limits[] = {
+        {GL_MAX_RENDERBUFFER_SIZE, "GL_MAX_RENDERBUFFER_SIZE", true},
+        {GL_MAX_TEXTURE_SIZE, "GL_MAX_TEXTURE_SIZE", options.color == ColorStorage::Texture},
+    };
+    for (const Limit& limit : limits) {
+        GLint max = 0;
+        fn.GetIntegerv(limit.name, &max);
+        if (limit.applies && (w > max || h > max)) {
+            return frustum::Error{std::string(kCreate) + ": width and height must be <= " +
+                                  limit.text + "=" + std::to_string(max) + ", got " + size_text(w, h)};
+        }
+    }
+    GLint viewport[2] = {0, 0};
+    fn.GetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    if (w > viewport[0] || h > viewport[1]) {
+        return frustum::Error{std::string(kCreate) + ": size must fit GL_MAX_VIEWPORT_DIMS=" +
+                              size_text(viewport[0], viewport[1]) + ", got " + size_text(w, h)};
+    }
+    return {};
+}
+
+frustum::Result<Renderbuffer> make_renderbuffer(const Functions& fn, GLenum format, int width,
+                                                int height) {
+    auto renderbuffer = Renderbuffer::create(fn);
+    if (renderbuffer) {
+        fn.BindRenderbuffer(GL_RENDERBUFFER, renderbuffer->id());
+        fn.RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    }
+    return renderbuffer;
+}
+
+frustum::Result<Texture> make_color_texture(const Functions& fn, int width, int height) {
+    auto texture = Texture::create(fn);
+    if (texture) {
+        fn.BindTexture(GL_TEXTURE_2D, texture->id());
+        fn.TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
+        fn.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        fn.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        fn.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        fn.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    return texture;
+}
+
+} // namespace
+
+frustum::Result<OffscreenTarget> OffscreenTarget::create(const Functions& fn,
+                                                         const OffscreenTargetOptions& options) {
+    if (auto size = check_size(fn, options); !size) {
+        return frustum::Error{size.error()};
+    }
+    OffscreenTarget target;
+    target.fn_ = &fn;
+    target.width_ = options.width;
+    target.height_ = options.height;
+    auto framebuffer = Framebuffer::create(fn);
+    if (!framebuffer) {
+        return frustum::Error{framebuffer.error()};
+    }
+    target.framebuffer_ = std::move(*framebuffer);
+    fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
+
+    if (options.color == ColorStorage::Texture) {
+        auto texture = make_color_texture(fn, options.width, options.height);
+        if (!texture) {
+            return frustum::Error{texture.error()};
+        }
+        target.color_texture_ = std::move(*texture);
+        fn.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                target.color_texture_.id(), 0);
+    } else {
+        auto color = make_renderbuffer(fn, GL_RGBA8, options.width, options.height);
+        if (!color) {
+            return frustum::Error{color.error()};
+        }
+        target.color_renderbuffer_ = std::move(*color);
+        fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                   target.color_renderbuffer_.id());
+    }
+    const GLenum depth_format =
+        options.depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F;
+    auto depth = make_renderbuffer(fn, depth_format, options.width, options.height);
+    if (!depth) {
+        return frustum::Error{depth.error()};
+    }
+    target.depth_renderbuffer_ = std::move(*depth);
+    fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                               target.depth_renderbuffer_.id());
+
+    if (auto error = check_error(fn, kCreate); !error) {
+        return frustum::Error{error.error()};
+    }
+    if (auto complete = check_framebuffer_complete(fn, GL_FRAMEBUFFER, kCreate); !complete) {
+        return frustum::Error{complete.error()};
+    }
+    target.bind();
+    return target;
+}
+
+void OffscreenTarget::bind() const {
+    fn_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    fn_->Viewport(0, 0, width_, height_);
+}
+
+frustum::Result<image::Image> OffscreenTarget::read_rgba8() const {
+    bind();
+    fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    fn_->BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    fn_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    fn_->PixelStorei(GL_PACK_ROW_LENGTH, 0);
+    fn_->PixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    fn_->PixelStorei(GL_PACK_SKIP_ROWS, 0);
+    image::Image result = image::make_image(width_, height_, {0, 0, 0, 0});
+    fn_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, result.rgba.data());
+    if (auto error = check_error(*fn_, "gl::OffscreenTarget::read_rgba8(): glReadPixels"); !error) {
+        return frustum::Error{error.error()};
+    }
+    const auto row_bytes = static_cast<std::ptrdiff_t>(width_) * 4;
+    for (int top = 0, bottom = height_ - 1; top < bottom; ++top, --bottom) {
+        std::swap_ranges(result.rgba.begin() + top * row_bytes,
+                         result.rgba.begin() + (top + 1) * row_bytes,
+                         result.rgba.begin() + bottom * row_bytes);
+    }
+    return result;
+}
+
+} // namespace gl

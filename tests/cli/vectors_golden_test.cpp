@@ -1,0 +1,146 @@
+// Golden vectors (tests/golden/): the checked-in response must be what the
+// tool answers today, within 1e-9 relative (per array: relative to its
+// largest entry) + 1e-12 absolute, so a silent change in the library fails
+// here. After a deliberate change: scripts/regen-golden.sh, then review the diff.
+#include "vectors_checks.hpp"
+
+#include "vectors/json_reader.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
+
+using namespace vectors_test;
+
+namespace {
+
+constexpr double kRelative = 1e-9;
+constexpr double kAbsolute = 1e-12;
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string golden(const char* name) { return read_file(std::string(FRUSTUM_SOURCE_DIR) + "/tests/golden/" + name); }
+
+double largest_number(const json& array) {
+    double largest = 0;
+    for (const json& v : array) {
+        if (v.is_number()) {
+            largest = std::max(largest, std::abs(v.get<double>()));
+        }
+    }
+    return largest;
+}
+
+// Same structure, same strings and booleans, numbers within tolerance.
+// `scale` is the largest magnitude of the array holding the number.
+void compare(const json& expected, const json& actual, const std::string& path, double scale = 0) {
+    INFO("at " << path);
+    if (expected.is_number() && actual.is_number()) {
+        const double e = expected.get<double>(), a = actual.get<double>();
+        INFO("expected " << e << ", got " << a);
+        CHECK(std::abs(e - a) <= kRelative * std::max(scale, std::abs(e)) + kAbsolute);
+        return;
+    }
+    REQUIRE(expected.type_name() == std::string(actual.type_name()));
+    if (expected.is_object()) {
+        REQUIRE(expected.size() == actual.size());
+        for (const auto& item : expected.items()) {
+            REQUIRE_MESSAGE(actual.contains(item.key()), "missing key " << item.key());
+            compare(item.value(), actual[item.key()], path + "." + item.key());
+        }
+    } else if (expected.is_array()) {
+        REQUIRE(expected.size() == actual.size());
+        const double array_scale = largest_number(expected);
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            compare(expected[i], actual[i], path + "[" + std::to_string(i) + "]", array_scale);
+        }
+    } else {
+        CHECK(expected == actual); // strings (id, error), booleans, null
+    }
+}
+
+} // namespace
+
+TEST_SUITE("cli") {
+
+TEST_CASE("vectors golden: the tool still answers request-v1.json with response-v1.json") {
+    const Run r = run_text(golden("request-v1.json"));
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    const json expected = json::parse(golden("response-v1.json"));
+    const json actual = json::parse(r.out);
+    REQUIRE(expected["cases"].size() == actual["cases"].size());
+    for (std::size_t i = 0; i < expected["cases"].size(); ++i) {
+        const json& e = expected["cases"][i];
+        compare(e, actual["cases"][i], "cases[" + std::to_string(i) + "] (" + e["id"].get<std::string>() + ")");
+    }
+}
+
+// The request holds 1e999, which nlohmann::json::parse refuses; the tool's
+// own reader turns it into infinity.
+json golden_request() {
+    const auto request = vectors::read_json(golden("request-v1.json"));
+    REQUIRE_MESSAGE(request.ok(), request.error());
+    return *request;
+}
+
+TEST_CASE("vectors golden: every ok answer of the checked-in response is self-consistent") {
+    const json cases = golden_request()["cases"];
+    const json response = json::parse(golden("response-v1.json"))["cases"];
+    REQUIRE(cases.size() == response.size());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        REQUIRE(cases[i]["id"] == response[i]["id"]);
+        if (response[i]["ok"].get<bool>()) {
+            check_consistent(cases[i], response[i]);
+        }
+    }
+}
+
+TEST_CASE("vectors golden: request-v1.json covers every camera, op, depth range and failure kind") {
+    const json cases = golden_request()["cases"];
+    const json response = json::parse(golden("response-v1.json"))["cases"];
+    REQUIRE(cases.size() == response.size());
+    std::set<std::string> cameras, ops, depths, ids;
+    int infinite_far = 0, with_points = 0, failures = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const json& c = cases[i];
+        CHECK(ids.insert(c["id"].get<std::string>()).second); // ids are unique
+        cameras.insert(c["camera"].begin().key());
+        depths.insert(c.value("depth", std::string("zero_to_one")));
+        for (const json& op : c.value("ops", json::array())) {
+            ops.insert(op.begin().key());
+        }
+        infinite_far += response[i]["ok"].get<bool>() && response[i]["planes"]["far"].is_null();
+        with_points += c.contains("points") && !c["points"].empty();
+        failures += !response[i]["ok"].get<bool>();
+    }
+    int overflow = 0; // "1e999" in the text: read as infinity, an ok: false case
+    const std::string raw = golden("request-v1.json");
+    for (std::size_t at = raw.find("1e999"); at != std::string::npos; at = raw.find("1e999", at + 1)) {
+        ++overflow;
+    }
+    CHECK(cameras == std::set<std::string>{"perspective", "frustum", "ortho", "planes", "mirror_rect", "matrix"});
+    CHECK(ops == std::set<std::string>{"crop", "reflect", "clip", "mirror"});
+    CHECK(depths == std::set<std::string>{"zero_to_one", "minus_one_to_one", "reversed_zero_to_one"});
+    CHECK(infinite_far >= 6);
+    CHECK(with_points >= 20);
+    CHECK(failures >= 20);
+    CHECK(overflow >= 3);
+}
+
+TEST_CASE("vectors golden: every input of malformed-v1.json is exit 2, naming its place") {
+    const json file = json::parse(golden("malformed-v1.json"));
+    CHECK(file["version"] == 1);
+    REQUIRE(file["inputs"].size() >= 20);
+    for (const json& item : file["inputs"]) {
+        INFO(item["name"].get<std::string>());
+        const std::string err = rejected(item["input"].get<std::string>());
+        CHECK(err.find(item["place"].get<std::string>()) != std::string::npos);
+    }
+}
+
+} // TEST_SUITE

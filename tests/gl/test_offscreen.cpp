@@ -1,0 +1,254 @@
+// Rendering into an OffscreenTarget through both backends and reading it back.
+#include "gl_test_support.hpp"
+
+#include <gl/clip_control.hpp>
+#include <gl/errors.hpp>
+#include <gl/objects.hpp>
+#include <gl/offscreen_target.hpp>
+#include <image/compare.hpp>
+#include <image/contact_sheet.hpp>
+#include <image/png.hpp>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace {
+
+constexpr int kSize = 64;
+// glClearColor(0.1, 0.2, 0.6, 1) and the triangle's (1, 0.5, 0, 1) as RGBA8;
+// drivers may round x.5 either way, hence the tolerance of 1.
+constexpr image::Rgba kClearRgba{26, 51, 153, 255};
+constexpr image::Rgba kTriangleRgba{255, 128, 0, 255};
+constexpr int kRoundingTolerance = 1;
+
+// A triangle in the top half of clip space: its centroid (0, 0.5) lands on
+// image row 16 of 64 when rows run top to bottom.
+constexpr std::array<gl_test::Vertex, 3> kTopTriangle = {{
+    {-0.5f, 0.2f, 0.0f, 1.0f},
+    {0.5f, 0.2f, 0.0f, 1.0f},
+    {0.0f, 0.9f, 0.0f, 1.0f},
+}};
+
+// A fresh kSize x kSize target cleared to kClearRgba with one triangle in
+// kTriangleRgba, read back.
+image::Image render_triangle(const gl::Functions& fn,
+                                            const std::array<gl_test::Vertex, 3>& vertices,
+                                            gl::ColorStorage color = gl::ColorStorage::Renderbuffer,
+                                            gl::DepthFormat depth = gl::DepthFormat::Depth24) {
+    auto target = gl::OffscreenTarget::create(fn, {kSize, kSize, color, depth});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    auto program = gl::Program::build(fn, gl_test::kVertexShader, gl_test::kFragmentShader);
+    REQUIRE_MESSAGE(program.ok(), program.error());
+    fn.ClearColor(0.1f, 0.2f, 0.6f, 1.0f);
+    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl_test::draw_triangle(fn, *program, vertices, {1.0f, 0.5f, 0.0f, 1.0f});
+    REQUIRE(gl::check_error(fn, "render_triangle()").ok());
+    auto pixels = target->read_rgba8();
+    REQUIRE_MESSAGE(pixels.ok(), pixels.error());
+    return std::move(*pixels);
+}
+
+void check_top_triangle(const image::Image& picture) {
+    REQUIRE(picture.width == kSize);
+    REQUIRE(picture.height == kSize);
+    CHECK(gl_test::near(image::pixel_at(picture, 32, 16), kTriangleRgba, kRoundingTolerance));
+    CHECK(gl_test::near(image::pixel_at(picture, 32, 48), kClearRgba, kRoundingTolerance));
+    for (int corner_x : {0, kSize - 1}) {
+        for (int corner_y : {0, kSize - 1}) {
+            CHECK(gl_test::near(image::pixel_at(picture, corner_x, corner_y), kClearRgba,
+                                kRoundingTolerance));
+        }
+    }
+}
+
+// On a failed comparison, saves a, b, their diff and a contact sheet.
+void save_for_inspection(const std::string& stem, const image::Image& a, const image::Image& b) {
+    const auto diff = image::diff_image(a, b);
+    REQUIRE(diff.ok());
+    const auto sheet = image::contact_sheet({{"a", &a}, {"b", &b}, {"diff", &*diff}}, 3);
+    REQUIRE(sheet.ok());
+    const std::string path = stem + "-a-b-diff.png";
+    const auto written = image::write_png(*sheet, path);
+    MESSAGE((written ? "wrote " + path : written.error()));
+}
+
+} // namespace
+
+TEST_SUITE("gl") {
+
+TEST_CASE("a triangle in the top half comes back in the top rows") {
+    for (gl::Backend backend : gl_test::kBackends) {
+        INFO("backend: " << gl::to_string(backend));
+        auto env = gl_test::make_environment(backend);
+        if (!env) {
+            continue;
+        }
+        check_top_triangle(render_triangle(env->fn, kTopTriangle));
+    }
+    CHECK(gl::live_object_count() == 0);
+}
+
+TEST_CASE("texture colour and 32-bit float depth targets render the same") {
+    auto env = gl_test::make_environment(gl::Backend::Egl);
+    if (!env) {
+        return;
+    }
+    check_top_triangle(render_triangle(env->fn, kTopTriangle, gl::ColorStorage::Texture,
+                                       gl::DepthFormat::Depth32F));
+}
+
+TEST_CASE("EGL and OSMesa images agree") {
+    std::optional<image::Image> pictures[2];
+    for (std::size_t i = 0; i < 2; ++i) {
+        auto env = gl_test::make_environment(gl_test::kBackends[i]);
+        if (!env) {
+            return;
+        }
+        pictures[i] = render_triangle(env->fn, kTopTriangle);
+    }
+    // Both are llvmpipe, so edges should match too; allow one level of
+    // rounding per channel and no pixel beyond it.
+    const auto diff = image::compare(*pictures[0], *pictures[1], kRoundingTolerance);
+    REQUIRE(diff.ok());
+    MESSAGE("egl vs osmesa: mean " << diff->mean_abs << ", max " << diff->max_abs << ", "
+                                   << diff->pixels_over << " pixels over " << diff->tolerance);
+    CHECK(diff->pixels_over == 0);
+    if (diff->pixels_over != 0) {
+        save_for_inspection("egl-vs-osmesa", *pictures[0], *pictures[1]);
+    }
+}
+
+TEST_CASE("zero-to-one clip control clips what [-1, 1] keeps") {
+    // Clip z = -0.5 w: inside [-1, 1] depth, behind the near plane in [0, 1].
+    constexpr std::array<gl_test::Vertex, 3> kNegativeZ = {{
+        {-0.5f, 0.2f, -0.5f, 1.0f},
+        {0.5f, 0.2f, -0.5f, 1.0f},
+        {0.0f, 0.9f, -0.5f, 1.0f},
+    }};
+    for (gl::Backend backend : gl_test::kBackends) {
+        INFO("backend: " << gl::to_string(backend));
+        auto env = gl_test::make_environment(backend);
+        if (!env) {
+            continue;
+        }
+        if (!gl::supports_zero_to_one_depth(env->fn, *env->context)) {
+            MESSAGE("skipping " << gl::to_string(backend) << ": no clip control");
+            const auto status = gl::set_depth_zero_to_one(env->fn, true);
+            CHECK_FALSE(status.ok());
+            continue;
+        }
+        REQUIRE(gl::set_depth_zero_to_one(env->fn, true).ok());
+        const auto clipped = render_triangle(env->fn, kNegativeZ);
+        CHECK(gl_test::near(image::pixel_at(clipped, 32, 16), kClearRgba, kRoundingTolerance));
+        REQUIRE(gl::set_depth_zero_to_one(env->fn, false).ok());
+        const auto kept = render_triangle(env->fn, kNegativeZ);
+        CHECK(gl_test::near(image::pixel_at(kept, 32, 16), kTriangleRgba, kRoundingTolerance));
+    }
+}
+
+TEST_CASE("an occlusion query sees the triangle") {
+    auto env = gl_test::make_environment(gl::Backend::Egl);
+    if (!env) {
+        return;
+    }
+    const gl::Functions& fn = env->fn;
+    auto query = gl::Query::create(fn);
+    REQUIRE(query.ok());
+    fn.BeginQuery(GL_ANY_SAMPLES_PASSED, query->id());
+    render_triangle(fn, kTopTriangle);
+    fn.EndQuery(GL_ANY_SAMPLES_PASSED);
+    GLuint any_passed = 0;
+    fn.GetQueryObjectuiv(query->id(), GL_QUERY_RESULT, &any_passed);
+    CHECK(any_passed == GL_TRUE);
+    CHECK(gl::check_error(fn, "query").ok());
+}
+
+TEST_CASE("shader errors carry the stage and the info log") {
+    auto env = gl_test::make_environment(gl::Backend::Egl);
+    if (!env) {
+        return;
+    }
+    const gl::Functions& fn = env->fn;
+    const auto broken = gl::Program::build(fn, gl_test::kVertexShader,
+                                           "#version 300 es\nvoid main() { undefined_call(); }\n");
+    REQUIRE_FALSE(broken.ok());
+    const std::string prefix = "gl::Program::build(): fragment shader failed to compile:\n";
+    CHECK(broken.error().rfind(prefix, 0) == 0);
+    CHECK(broken.error().size() > prefix.size() + 10);
+    MESSAGE(broken.error());
+
+    const auto unlinked = gl::Program::build(
+        fn, gl_test::kVertexShader,
+        "#version 300 es\nprecision mediump float;\nin vec4 v_never_written;\nout vec4 o;\n"
+        "void main() { o = v_never_written; }\n");
+    REQUIRE_FALSE(unlinked.ok());
+    CHECK(unlinked.error().rfind("gl::Program::build(): link failed:\n", 0) == 0);
+    MESSAGE(unlinked.error());
+
+    const auto bad_stage = gl::Shader::compile(fn, GL_TEXTURE_2D, "");
+    REQUIRE_FALSE(bad_stage.ok());
+    CHECK(bad_stage.error() ==
+          "gl::Shader::compile(): glCreateShader failed for shader stage 0x0DE1: GL error GL_INVALID_ENUM");
+    CHECK(gl::live_object_count(gl::ObjectKind::Shader) == 0);
+    CHECK(gl::live_object_count(gl::ObjectKind::Program) == 0);
+}
+
+TEST_CASE("bad target sizes and incomplete framebuffers give clear errors") {
+    auto env = gl_test::make_environment(gl::Backend::Egl);
+    if (!env) {
+        return;
+    }
+    const gl::Functions& fn = env->fn;
+    const auto empty = gl::OffscreenTarget::create(fn, {0, 64});
+    REQUIRE_FALSE(empty.ok());
+    CHECK(empty.error() == "gl::OffscreenTarget::create(): width and height must be >= 1, got 0x64");
+
+    GLint max_renderbuffer = 0;
+    fn.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
+    const int too_wide = max_renderbuffer + 1;
+    const auto oversized = gl::OffscreenTarget::create(fn, {too_wide, 64});
+    REQUIRE_FALSE(oversized.ok());
+    CHECK(oversized.error() ==
+          "gl::OffscreenTarget::create(): width and height must be <= GL_MAX_RENDERBUFFER_SIZE=" +
+              std::to_string(max_renderbuffer) + ", got " + std::to_string(too_wide) + "x64");
+
+    auto framebuffer = gl::Framebuffer::create(fn);
+    REQUIRE(framebuffer.ok());
+    fn.BindFramebuffer(GL_FRAMEBUFFER, framebuffer->id());
+    const auto incomplete = gl::check_framebuffer_complete(fn, GL_FRAMEBUFFER, "gl_test::bare()");
+    REQUIRE_FALSE(incomplete.ok());
+    CHECK(incomplete.error() ==
+          "gl_test::bare(): framebuffer incomplete: GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT");
+    fn.BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("handles move, reset and count live objects") {
+    auto env = gl_test::make_environment(gl::Backend::OsMesa);
+    if (!env) {
+        return;
+    }
+    const int before = gl::live_object_count();
+    auto created = gl::Buffer::create(env->fn);
+    REQUIRE(created.ok());
+    gl::Buffer moved = std::move(*created);
+    CHECK_FALSE(*created);
+    CHECK(moved);
+    CHECK(gl::live_object_count(gl::ObjectKind::Buffer) == 1);
+    gl::Buffer assigned;
+    assigned = std::move(moved);
+    CHECK(assigned.kind() == gl::ObjectKind::Buffer);
+    CHECK(gl::live_object_count() == before + 1);
+    assigned.reset();
+    CHECK_FALSE(assigned);
+    CHECK(gl::live_object_count() == before);
+}
+
+TEST_CASE("no GL object outlives the tests") {
+    for (int kind = 0; kind < gl::kObjectKindCount; ++kind) {
+        INFO(gl::to_string(static_cast<gl::ObjectKind>(kind)));
+        CHECK(gl::live_object_count(static_cast<gl::ObjectKind>(kind)) == 0);
+    }
+}
+
+} // TEST_SUITE

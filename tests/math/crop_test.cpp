@@ -1,0 +1,190 @@
+// crop / uncrop / crop_tiles (paper §5.1, eq. 14-15; erratum 1: the
+// offset is from the BOTTOM-left).
+#include "support.hpp"
+
+using namespace mtest;
+using frustum::CropRect;
+using frustum::DepthRange;
+
+namespace {
+
+// eq. 14 written literally in the paper's row-vector form, then transposed
+// for the column convention: P' = P cropMat  <=>  M' = cropMat^T M, and
+// (P')^-1 = invCropMat P^-1  <=>  inv' = inv invCropMat^T.
+glm::dmat4 paper_crop_mat(const CropRect<double>& r) {
+    const double x = r.x / r.width, y = r.y / r.height;
+    const double w = r.full_width / r.width, h = r.full_height / r.height;
+    return mat_rows<double>({w, 0, 0, 0}, {0, h, 0, 0}, {0, 0, 1, 0}, {w - 1 - 2 * x, h - 1 - 2 * y, 0, 1});
+}
+glm::dmat4 paper_inv_crop_mat(const CropRect<double>& r) {
+    const double x = r.x / r.width, y = r.y / r.height;
+    const double rw = r.width / r.full_width, rh = r.height / r.full_height;
+    return mat_rows<double>({rw, 0, 0, 0}, {0, rh, 0, 0}, {0, 0, 1, 0},
+                            {-1 + rw + 2 * x * rw, -1 + rh + 2 * y * rh, 0, 1});
+}
+
+CropRect<double> random_rect(Random& rng) {
+    const double fw = rng.uniform(1, 4000), fh = rng.uniform(1, 4000);
+    const double w = fw * rng.uniform(0.05, 1), h = fh * rng.uniform(0.05, 1);
+    return {rng.uniform(0, fw - w), rng.uniform(0, fh - h), w, h, fw, fh};
+}
+
+template <class T>
+CropRect<T> as(const CropRect<double>& r) {
+    return {T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
+}
+
+} // namespace
+
+TEST_SUITE("math") {
+
+TEST_CASE("crop: the sparse form equals the explicit cropMat product of eq. 14") {
+    Random rng(91);
+    for (int i = 0; i < 1000; ++i) {
+        const CameraSpec c = random_camera(rng);
+        const MatrixPair<double> pair = make<double>(c);
+        const CropRect<double> rect = random_rect(rng);
+        INFO(c.text());
+        const glm::dmat4 crop_mat = paper_crop_mat(rect), inv_crop_mat = paper_inv_crop_mat(rect);
+        // The paper's two matrices are inverses of each other.
+        CHECK(glm::dmat4(crop_mat * inv_crop_mat) == close_abs(glm::dmat4(1), 1e-12));
+        const auto cropped = frustum::crop(pair, rect);
+        REQUIRE_MESSAGE(cropped.ok(), cropped.error());
+        CHECK(column_relative_diff(cropped->matrix(), glm::dmat4(glm::transpose(crop_mat) * pair.matrix())) <= 1e-12);
+        CHECK(column_relative_diff(cropped->inverse(), glm::dmat4(pair.inverse() * glm::transpose(inv_crop_mat))) <=
+              1e-12);
+        // Only rows 0 and 1 change (eq. 15).
+        CHECK(frustum::row(cropped->matrix(), 2) == frustum::row(pair.matrix(), 2));
+        CHECK(frustum::row(cropped->matrix(), 3) == frustum::row(pair.matrix(), 3));
+        CHECK(cropped->inverse()[2] == pair.inverse()[2]);
+        CHECK(inverse_residual(*cropped) <= 256 * eps<double>());
+    }
+}
+
+TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of the landmark are off_axis windows", T,
+                   float, double) {
+    // 800 x 600 pixels over the landmark's near window [-1, 1]^2 at near 1.
+    // Y = 0 with height 300 is the BOTTOM half, window [-1, 1] x [-1, 0]:
+    // y' = h y + (h - 1 - 2 Y/bh) w = 2 y + w, so y = -1 -> -1, y = 0 -> 1.
+    for (const DepthRange depth : all_depth_ranges) {
+        INFO("depth=", frustum::to_string(depth));
+        const auto base = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
+        REQUIRE(base.ok());
+        const auto bottom = frustum::crop(*base, CropRect<T>{0, 0, 800, 300, 800, 600});
+        const auto bottom_window = frustum::off_axis<T>(-1, 1, -1, 0, 1, T(10), depth);
+        REQUIRE((bottom.ok() && bottom_window.ok()));
+        CHECK(bottom->matrix() == close(bottom_window->matrix(), tight<T>()));
+        CHECK(bottom->inverse() == close(bottom_window->inverse(), tight<T>()));
+        // At depth 2 the original window is [-2, 2]^2: y = -1.8 is in the
+        // bottom half, y = +0.2 just above it.
+        const Vec4<T> low = bottom->matrix() * Vec4<T>(0, T(-1.8), -2, 1);
+        CHECK(clip_inside(low, depth, 0));
+        const Vec4<T> high = bottom->matrix() * Vec4<T>(0, T(0.2), -2, 1);
+        CHECK_FALSE(clip_inside(high, depth, 0));
+        // Top-right quadrant: X = 400, Y = 300 -> window [0, 1] x [0, 1].
+        const auto quadrant = frustum::crop(*base, CropRect<T>{400, 300, 400, 300, 800, 600});
+        const auto quadrant_window = frustum::off_axis<T>(0, 1, 0, 1, 1, T(10), depth);
+        REQUIRE((quadrant.ok() && quadrant_window.ok()));
+        CHECK(quadrant->matrix() == close(quadrant_window->matrix(), tight<T>()));
+        // The whole image is the identity crop.
+        const auto whole = frustum::crop(*base, CropRect<T>{0, 0, 800, 600, 800, 600});
+        REQUIRE(whole.ok());
+        CHECK(whole->matrix() == base->matrix());
+        CHECK(whole->inverse() == base->inverse());
+    }
+}
+
+TEST_CASE_TEMPLATE("crop then uncrop returns the original; flags and depth carried", T, float, double) {
+    Random rng(92);
+    for (int i = 0; i < 1000; ++i) {
+        const CameraSpec c = random_camera(rng);
+        MatrixPair<T> pair = make<T>(c);
+        if (rng.coin()) {
+            const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
+            REQUIRE(r.ok());
+            pair = *r;
+        }
+        const CropRect<T> rect = as<T>(random_rect(rng));
+        const auto cropped = frustum::crop(pair, rect);
+        REQUIRE_MESSAGE(cropped.ok(), cropped.error());
+        const auto back = frustum::uncrop(*cropped, rect);
+        REQUIRE(back.ok());
+        CHECK(back->flips_winding() == pair.flips_winding());
+        CHECK(back->depth() == c.depth);
+        // Scales up to 20 (a 5% crop) and back: a few ulp times 20.
+        CHECK(column_relative_diff(back->matrix(), pair.matrix()) <= loose<T>());
+        CHECK(column_relative_diff(back->inverse(), pair.inverse()) <= loose<T>());
+        CHECK(inverse_residual(*cropped) <= 256 * eps<T>());
+    }
+}
+
+TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
+    // 7 x 5 pixels in 3 x 2 tiles: edges at floor(i W / n) -> x 0, 2, 4, 7;
+    // y 0, 2, 5. Row 0 is the bottom row.
+    const auto base = frustum::perspective<T>(T(1), T(1.4), T(0.5), T(50), DepthRange::ReversedZeroToOne);
+    REQUIRE(base.ok());
+    const auto tiles = frustum::crop_tiles(*base, 7, 5, 3, 2);
+    REQUIRE_MESSAGE(tiles.ok(), tiles.error());
+    REQUIRE(tiles->size() == 6);
+    const int xs[4] = {0, 2, 4, 7}, ys[3] = {0, 2, 5};
+    for (const auto& tile : *tiles) {
+        CAPTURE(tile.column);
+        CAPTURE(tile.row);
+        CHECK(tile.x_px == xs[tile.column]);
+        CHECK(tile.width_px == xs[tile.column + 1] - xs[tile.column]);
+        CHECK(tile.y_px == ys[tile.row]);
+        CHECK(tile.height_px == ys[tile.row + 1] - ys[tile.row]);
+        const auto same = frustum::crop(*base, CropRect<T>{T(tile.x_px), T(tile.y_px), T(tile.width_px),
+                                                           T(tile.height_px), 7, 5});
+        REQUIRE(same.ok());
+        CHECK(tile.pair.matrix() == same->matrix());
+        CHECK(tile.pair.inverse() == same->inverse());
+    }
+
+    // Random cameras and tilings: every random clip point of the original
+    // falls in exactly one tile's [-1, 1)^2 (half-open so shared edges
+    // count once), at the pixel it should, and each tile pair is a
+    // componentwise inverse.
+    Random rng(93);
+    for (int i = 0; i < 200; ++i) {
+        const CameraSpec c = random_camera(rng);
+        const MatrixPair<T> pair = make<T>(c);
+        const int w = 1 + rng.index(1920), h = 1 + rng.index(1080);
+        const int cols = 1 + rng.index(std::min(w, 8)), rows = 1 + rng.index(std::min(h, 8));
+        CAPTURE(w);
+        CAPTURE(h);
+        CAPTURE(cols);
+        CAPTURE(rows);
+        const auto all = frustum::crop_tiles(pair, w, h, cols, rows);
+        REQUIRE_MESSAGE(all.ok(), all.error());
+        REQUIRE(int(all->size()) == cols * rows);
+        long long area = 0;
+        for (const auto& tile : *all) {
+            area += static_cast<long long>(tile.width_px) * tile.height_px;
+            CHECK(inverse_residual(tile.pair) <= 256 * eps<T>());
+        }
+        CHECK(area == static_cast<long long>(w) * h);
+        for (int s = 0; s < 20; ++s) {
+            const glm::dvec4 u = random_clip_point(rng, c.depth, 0);
+            const glm::dvec4 world = glm::dmat4(pair.inverse()) * u;
+            // Pixel coordinates of the point, from the bottom-left.
+            const double px = (u.x + 1) / 2 * w, py = (u.y + 1) / 2 * h;
+            int hits = 0;
+            for (const auto& tile : *all) {
+                const glm::dvec4 t = glm::dmat4(tile.pair.matrix()) * world;
+                const double tx = t.x / t.w, ty = t.y / t.w;
+                if (tx >= -1 && tx < 1 && ty >= -1 && ty < 1) {
+                    ++hits;
+                    // In the tile's pixel rectangle (1e-3 px slack for float).
+                    CHECK(px >= tile.x_px - 1e-3);
+                    CHECK(px <= tile.x_px + tile.width_px + 1e-3);
+                    CHECK(py >= tile.y_px - 1e-3);
+                    CHECK(py <= tile.y_px + tile.height_px + 1e-3);
+                }
+            }
+            CHECK(hits == 1);
+        }
+    }
+}
+
+} // TEST_SUITE

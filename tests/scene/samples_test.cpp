@@ -1,0 +1,255 @@
+// Every Khronos sample in FRUSTUM_SAMPLES_DIR loads, with the expected content.
+#include "helpers.hpp"
+
+#include "scene/load_gltf.hpp"
+
+#include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <set>
+
+using scene_test::sample_path;
+
+namespace {
+
+scene::Scene load_ok(const std::string& path, const scene::LoadOptions& options = {}) {
+    frustum::Result<scene::Scene> result = scene::load_gltf(path, options);
+    INFO(result.error());
+    REQUIRE(result.ok());
+    return std::move(result).value();
+}
+
+bool near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-4f) {
+    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tolerance)));
+}
+
+bool near(const glm::mat4& a, const glm::mat4& b, float tolerance = 1e-5f) {
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            if (std::abs(a[c][r] - b[c][r]) > tolerance) return false;
+        }
+    }
+    return true;
+}
+
+const scene::Instance& instance_named(const scene::Scene& s, const std::string& name) {
+    for (const scene::Instance& instance : s.instances) {
+        if (instance.node_name == name) return instance;
+    }
+    FAIL("no instance named " << name);
+    return s.instances.front();
+}
+
+} // namespace
+
+TEST_SUITE("scene") {
+
+TEST_CASE("every sample loads with the expected mesh and instance counts") {
+    struct Expected {
+        const char* model;
+        std::size_t meshes;
+        std::size_t instances;
+        std::size_t cameras;
+        std::size_t images;
+    };
+    const Expected samples[] = {
+        {"AnimatedTriangle", 1, 1, 0, 0}, {"Box", 1, 1, 0, 0},
+        {"BoxAnimated", 2, 2, 0, 0},      {"BoxTextured", 1, 1, 0, 1},
+        {"BoxVertexColors", 1, 1, 0, 0},  {"Cameras", 1, 1, 2, 0},
+        {"Duck", 1, 1, 1, 1},             {"MeshPrimitiveModes", 7, 7, 0, 0},
+        {"MultipleScenes", 2, 1, 0, 0},   {"OrientationTest", 13, 13, 0, 0},
+        {"RiggedSimple", 1, 1, 0, 0},     {"SimpleMeshes", 1, 2, 0, 0},
+        {"SimpleMorph", 1, 1, 0, 0},      {"SimpleSkin", 1, 1, 0, 0},
+        {"SimpleSparseAccessor", 1, 1, 0, 0}, {"TextureCoordinateTest", 5, 5, 0, 1},
+        {"Triangle", 1, 1, 0, 0},         {"TriangleWithoutIndices", 1, 1, 0, 0},
+    };
+    for (const Expected& expected : samples) {
+        CAPTURE(expected.model);
+        const scene::Scene s = load_ok(sample_path(expected.model));
+        CHECK(s.meshes.size() == expected.meshes);
+        CHECK(s.instances.size() == expected.instances);
+        CHECK(s.cameras.size() == expected.cameras);
+        CHECK(s.images.size() == expected.images);
+        CHECK_FALSE(s.mirror.has_value());
+        CHECK_FALSE(s.lens.has_value());
+        for (const scene::Mesh& mesh : s.meshes) {
+            for (const scene::Primitive& primitive : mesh.primitives) {
+                CHECK_FALSE(primitive.positions.empty());
+                CHECK_FALSE(primitive.indices.empty());
+                CHECK((primitive.normals.empty() || primitive.normals.size() == primitive.positions.size()));
+                CHECK((primitive.colors.empty() || primitive.colors.size() == primitive.positions.size()));
+                CHECK((primitive.texcoords.empty() || primitive.texcoords.size() == primitive.positions.size()));
+                for (std::uint32_t index : primitive.indices) {
+                    REQUIRE(index < primitive.positions.size());
+                }
+            }
+        }
+        CHECK(s.world_bounds.min.x <= s.world_bounds.max.x);
+    }
+}
+
+TEST_CASE("Duck: camera, decoded texture, node scale in the bounds") {
+    const scene::Scene s = load_ok(sample_path("Duck"));
+    REQUIRE(s.images.size() == 1);
+    CHECK(s.images[0].width == 512);
+    CHECK(s.images[0].height == 512);
+    CHECK(s.images[0].rgba.size() == 512u * 512u * 4u);
+    REQUIRE(s.materials.size() == 1);
+    CHECK(s.materials[0].name == "blinn3-fx");
+    CHECK(s.materials[0].base_color_texture == 0);
+    const scene::Primitive& primitive = s.meshes[0].primitives[0];
+    CHECK(primitive.positions.size() == 2399);
+    CHECK(primitive.indices.size() == 12636);
+    CHECK(primitive.texcoords.size() == 2399);
+    CHECK(primitive.normals.size() == 2399);
+    CHECK(primitive.material == 0);
+
+    REQUIRE(s.cameras.size() == 1);
+    const scene::Camera& camera = s.cameras[0];
+    CHECK(camera.kind == scene::Camera::Kind::Perspective);
+    CHECK(camera.name == "camera 0"); // neither the camera nor its node is named
+    CHECK(camera.yfov_rad == doctest::Approx(0.6605925559997559));
+    REQUIRE(camera.aspect.has_value());
+    CHECK(*camera.aspect == doctest::Approx(1.5));
+    CHECK(camera.znear_m == doctest::Approx(1.0));
+    REQUIRE(camera.zfar_m.has_value());
+    CHECK(*camera.zfar_m == doctest::Approx(10000.0));
+    // Parent scale 0.01 moves the camera but is stripped from its rotation.
+    CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(4.00113f, 4.63264f, -4.31078f)));
+    for (int axis = 0; axis < 3; ++axis) {
+        CHECK(glm::length(glm::vec3(camera.camera_to_world[axis])) == doctest::Approx(1.0));
+    }
+    CHECK(near(glm::vec3(camera.camera_to_world[2]), glm::vec3(0.536475f, 0.621148f, -0.571288f)));
+
+    CHECK(near(s.world_bounds.min, glm::vec3(-0.6929850f, 0.0992937f, -0.6132820f)));
+    CHECK(near(s.world_bounds.max, glm::vec3(0.9617990f, 1.6397000f, 0.5392520f)));
+}
+
+TEST_CASE("Cameras: perspective and orthographic with their node transforms") {
+    const scene::Scene s = load_ok(sample_path("Cameras"));
+    REQUIRE(s.cameras.size() == 2);
+    CHECK(s.cameras[0].kind == scene::Camera::Kind::Perspective);
+    CHECK(s.cameras[0].yfov_rad == doctest::Approx(0.7));
+    CHECK(s.cameras[0].znear_m == doctest::Approx(0.01));
+    CHECK(s.cameras[1].kind == scene::Camera::Kind::Orthographic);
+    CHECK(s.cameras[1].xmag == doctest::Approx(1.0));
+    CHECK(s.cameras[1].ymag == doctest::Approx(1.0));
+    REQUIRE(s.cameras[1].zfar_m.has_value());
+    CHECK(*s.cameras[1].zfar_m == doctest::Approx(100.0));
+    for (const scene::Camera& camera : s.cameras) {
+        CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(0.5f, 0.5f, 3.0f)));
+    }
+}
+
+TEST_CASE("MeshPrimitiveModes has all seven modes") {
+    const scene::Scene s = load_ok(sample_path("MeshPrimitiveModes"));
+    std::set<scene::PrimitiveMode> modes;
+    for (const scene::Mesh& mesh : s.meshes) {
+        for (const scene::Primitive& primitive : mesh.primitives) modes.insert(primitive.mode);
+    }
+    CHECK(modes.size() == 7);
+    CHECK(modes.count(scene::PrimitiveMode::Points) == 1);
+    CHECK(modes.count(scene::PrimitiveMode::LineLoop) == 1);
+    CHECK(modes.count(scene::PrimitiveMode::TriangleFan) == 1);
+}
+
+TEST_CASE("MultipleScenes: default scene 1, or the scene asked for") {
+    const scene::Scene by_default = load_ok(sample_path("MultipleScenes"));
+    REQUIRE(by_default.instances.size() == 1);
+    CHECK(by_default.instances[0].mesh == 1);
+
+    scene::LoadOptions first;
+    first.scene_index = 0;
+    const scene::Scene scene0 = load_ok(sample_path("MultipleScenes"), first);
+    REQUIRE(scene0.instances.size() == 1);
+    CHECK(scene0.instances[0].mesh == 0);
+    CHECK(scene0.meshes.size() == 2); // every mesh is loaded; instances pick
+}
+
+TEST_CASE("SimpleSparseAccessor: sparse values replace the dense ones") {
+    const scene::Scene s = load_ok(sample_path("SimpleSparseAccessor"));
+    const std::vector<glm::vec3>& positions = s.meshes[0].primitives[0].positions;
+    REQUIRE(positions.size() == 14);
+    CHECK(positions[7] == glm::vec3(0, 1, 0));   // untouched
+    CHECK(positions[8] == glm::vec3(1, 2, 0));   // sparse index 8
+    CHECK(positions[10] == glm::vec3(3, 3, 0));  // sparse index 10
+    CHECK(positions[12] == glm::vec3(5, 4, 0));  // sparse index 12
+    CHECK(positions[13] == glm::vec3(6, 1, 0));
+    CHECK(s.world_bounds.max == glm::vec3(6, 4, 0));
+}
+
+TEST_CASE("TriangleWithoutIndices gets indices 0..n-1") {
+    const scene::Scene s = load_ok(sample_path("TriangleWithoutIndices"));
+    CHECK(s.meshes[0].primitives[0].indices == std::vector<std::uint32_t>{0, 1, 2});
+}
+
+TEST_CASE("BoxVertexColors: COLOR_0 as RGBA with alpha 1") {
+    const scene::Scene s = load_ok(sample_path("BoxVertexColors"));
+    const scene::Primitive& primitive = s.meshes[0].primitives[0];
+    REQUIRE(primitive.colors.size() == 24);
+    for (const glm::vec4& color : primitive.colors) CHECK(color.a == 1.0f);
+}
+
+TEST_CASE("Box: the parent node matrix becomes the instance's world transform") {
+    const scene::Scene s = load_ok(sample_path("Box"));
+    REQUIRE(s.instances.size() == 1);
+    const glm::mat4 rotation_x(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0),
+                               glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));
+    CHECK(near(s.instances[0].world, rotation_x));
+    CHECK(near(s.world_bounds.min, glm::vec3(-0.5f)));
+    CHECK(near(s.world_bounds.max, glm::vec3(0.5f)));
+    REQUIRE(s.materials.size() == 1);
+    CHECK(s.materials[0].base_color_factor.r == doctest::Approx(0.8));
+
+    // The same box moved by the matrix's translation column: the bounds follow.
+    scene_test::TempDir dir;
+    scene_test::Json gltf = scene_test::read_json(sample_path("Box"));
+    gltf["nodes"][0]["matrix"][12] = 10.0;
+    gltf["nodes"][0]["matrix"][14] = -2.0;
+    const std::string moved = (dir.path() / "moved.gltf").string();
+    scene_test::write_text(moved, gltf.dump());
+    const scene::Scene m = load_ok(moved);
+    CHECK(near(m.world_bounds.min, glm::vec3(9.5f, -0.5f, -2.5f)));
+    CHECK(near(m.world_bounds.max, glm::vec3(10.5f, 0.5f, -1.5f)));
+}
+
+TEST_CASE("OrientationTest: TRS and matrix nodes") {
+    const scene::Scene s = load_ok(sample_path("OrientationTest"));
+    // ArrowX1: translation (5,0,0), rotation quaternion about -X, scale ~1.
+    const scene::Instance& trs = instance_named(s, "ArrowX1");
+    const glm::quat q(0.9537169933319092f, -0.30070576071739197f, 0.0f, 0.0f);
+    const glm::mat4 expected_trs = glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0)) *
+                                   glm::mat4_cast(q) *
+                                   glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 0.9999999403953552f, 0.9999999403953552f));
+    CHECK(near(trs.world, expected_trs));
+    // T * R * S, not another order: the translation column is untouched.
+    CHECK(near(glm::vec3(trs.world[3]), glm::vec3(5, 0, 0)));
+
+    const scene::Instance& matrix = instance_named(s, "ArrowX2");
+    const double m[16] = {1.0000000221841605, 0, 0, 0, 0, 0.9961947216654676, 0.08715572783347625, 0,
+                          0, -0.08715572783347625, 0.9961947216654676, 0, -5.0, 0, 0, 1};
+    CHECK(near(matrix.world, glm::mat4(glm::make_mat4(m))));
+
+    const scene::Instance& z1 = instance_named(s, "ArrowZ1");
+    CHECK(near(glm::vec3(z1.world[3]), glm::vec3(0, 0, 5)));
+    const scene::Instance& base = instance_named(s, "BaseCube");
+    CHECK(near(base.world, glm::mat4(1.0f)));
+}
+
+TEST_CASE("textured samples decode their images to RGBA8") {
+    const scene::Scene box = load_ok(sample_path("BoxTextured"));
+    REQUIRE(box.images.size() == 1);
+    CHECK(box.images[0].width == 256);
+    CHECK(box.images[0].height == 256);
+    CHECK(box.images[0].rgba.size() == 256u * 256u * 4u);
+    CHECK(box.materials[0].base_color_texture == 0);
+
+    const scene::Scene uv = load_ok(sample_path("TextureCoordinateTest"));
+    CHECK(uv.images[0].width == 512);
+    CHECK(uv.images[0].height == 512);
+}
+
+} // TEST_SUITE
