@@ -1,0 +1,43 @@
+// frustum-demo's command line:
+//   frustum-demo render [--scene FILE] [--camera NAME|INDEX] [--effect E]
+//                       [--tiles NxM] [--size WxH] [--backend egl|osmesa]
+//                       [--depth zero_to_one|minus_one_to_one]
+//                       [--mirror oblique|rectangle|reflect_only] [--out DIR] [--verbose]
+//   frustum-demo --help
+#pragma once
+
+#include "demo/failure.hpp"
+
+#include <gl/context.hpp>
+#include <render/depth_policy.hpp>
+#include <render/effect.hpp>
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace demo {
+
+struct RenderRequest {
+    std::string scene_path;            // default: FRUSTUM_ASSETS_DIR/showcase.gltf
+    std::optional<std::string> camera; // name or index; default "main", else camera 0
+    std::vector<render::Effect> effects; // --effect all: every effect, in kAllEffects order
+    int tile_columns = 3, tile_rows = 2;
+    int width_px = 640, height_px = 360;
+    std::optional<gl::Backend> backend; // unset: EGL, falling back to OSMesa with a note
+    render::DepthPath depth = render::DepthPath::ClipControlWhenAvailable;
+    render::MirrorMethod mirror = render::MirrorMethod::Oblique;
+    std::string out_dir = "out";
+    bool verbose = false;
+};
+
+struct HelpRequest {};
+
+// Every usage error is ExitStatus::UsageError with a one-line message that
+// names the value, e.g. "--size must be WxH with 1..8192 each, got '0x10'".
+std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::vector<std::string>& args);
+
+std::string help_text();
+
+} // namespace demo

@@ -1,0 +1,32 @@
+#include "demo/output_dir.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace demo {
+
+frustum::Status prepare_output_dir(const std::string& path) {
+    std::error_code error;
+    std::filesystem::create_directories(path, error);
+    if (error) {
+        return frustum::Error{"cannot create output folder '" + path + "': " + error.message()};
+    }
+    if (!std::filesystem::is_directory(path, error)) {
+        return frustum::Error{"output folder '" + path + "' is not a folder"};
+    }
+    const std::string probe = path + "/.frustum-demo-probe-" + std::to_string(::getpid());
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        return frustum::Error{"cannot write to output folder '" + path + "': " + std::strerror(errno)};
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return {};
+}
+
+} // namespace demo

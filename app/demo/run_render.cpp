@@ -1,0 +1,134 @@
+#include "demo/run_render.hpp"
+
+#include "demo/output_dir.hpp"
+
+#include <gl/context.hpp>
+#include <gl/functions.hpp>
+#include <image/contact_sheet.hpp>
+#include <image/png.hpp>
+#include <render/camera.hpp>
+#include <render/renderer.hpp>
+#include <scene/load_gltf.hpp>
+
+#include <memory>
+#include <utility>
+
+namespace demo {
+namespace {
+
+Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
+
+// --backend given: exactly that one. Otherwise EGL, then OSMesa with a note.
+frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
+    gl::ContextOptions options;
+    if (request.verbose) {
+        options.debug = true;
+        options.debug_sink = [note = reporter.note](std::string_view line) { note(line); };
+    }
+    if (request.backend) {
+        return gl::create_offscreen_context(*request.backend, options);
+    }
+    auto egl = gl::create_offscreen_context(gl::Backend::Egl, options);
+    if (egl) {
+        return egl;
+    }
+    reporter.note("note: no EGL context (" + egl.error() + "); using OSMesa");
+    return gl::create_offscreen_context(gl::Backend::OsMesa, options);
+}
+
+std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
+    return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne
+               ? "depth: [0, 1] clip range via clip control"
+               : "depth: matrices converted to the [-1, 1] clip range";
+}
+
+} // namespace
+
+std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter) {
+    if (auto status = prepare_output_dir(request.out_dir); !status) {
+        return runtime(status.error());
+    }
+    auto scene = scene::load_gltf(request.scene_path);
+    if (!scene) {
+        return runtime(scene.error());
+    }
+    auto camera_index = render::find_camera(*scene, request.camera);
+    if (!camera_index) {
+        return Failure{ExitStatus::UsageError, camera_index.error()};
+    }
+    auto cameras = render::make_cameras(*scene, *camera_index, request.width_px, request.height_px);
+    if (!cameras) {
+        return runtime(cameras.error());
+    }
+
+    // Destroyed in reverse: renderer, then the table its objects point to, then the context.
+    auto context = make_context(request, reporter);
+    if (!context) {
+        return runtime(context.error());
+    }
+    auto fn = gl::Functions::load(**context);
+    if (!fn) {
+        return runtime(fn.error());
+    }
+    auto renderer = render::Renderer::create(**context, *fn, *scene);
+    if (!renderer) {
+        return runtime(renderer.error());
+    }
+    if (request.verbose) {
+        reporter.note("context: " + gl::summary((*context)->describe()));
+        reporter.note(depth_summary(*renderer, request.depth));
+        reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
+    }
+
+    render::RenderOptions options;
+    options.width_px = request.width_px;
+    options.height_px = request.height_px;
+    options.depth = request.depth;
+    options.mirror_method = request.mirror;
+    options.tile_columns = request.tile_columns;
+    options.tile_rows = request.tile_rows;
+
+    const bool several = request.effects.size() > 1;
+    const std::size_t total = request.effects.size() + (several ? 1 : 0);
+    RenderRun run;
+    std::vector<std::pair<std::string, image::Image>> images;
+    const auto write = [&](const image::Image& picture, const std::string& name) -> frustum::Status {
+        const std::string path = request.out_dir + "/" + name;
+        if (auto status = image::write_png(picture, path); !status) {
+            return status;
+        }
+        run.written_paths.push_back(path);
+        if (several) {
+            reporter.progress("[" + std::to_string(run.written_paths.size()) + "/" + std::to_string(total) + "] " +
+                              name);
+        }
+        return {};
+    };
+    for (render::Effect effect : request.effects) {
+        auto picture = renderer->render(effect, *cameras, options);
+        if (!picture) {
+            return runtime(picture.error());
+        }
+        const std::string name(render::to_string(effect));
+        if (auto status = write(*picture, name + ".png"); !status) {
+            return runtime(status.error());
+        }
+        images.emplace_back(name, std::move(*picture));
+    }
+    if (several) {
+        std::vector<std::pair<std::string, const image::Image*>> cells;
+        for (const auto& [name, picture] : images) {
+            cells.emplace_back(name, &picture);
+        }
+        auto sheet = image::contact_sheet(cells, 2);
+        if (!sheet) {
+            return runtime(sheet.error());
+        }
+        if (auto status = write(*sheet, "contact_sheet.png"); !status) {
+            return runtime(status.error());
+        }
+    }
+    return run;
+}
+
+} // namespace demo

@@ -1,0 +1,28 @@
+// The render command: scene file -> cameras -> GL context -> one PNG per
+// effect (+ a contact sheet). Reports through callbacks; prints nothing.
+#pragma once
+
+#include "demo/command_line.hpp"
+#include "demo/failure.hpp"
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace demo {
+
+struct Reporter {
+    std::function<void(std::string_view)> progress; // "[2/4] mirror.png", multi-image runs only
+    std::function<void(std::string_view)> note;     // backend fallback, --verbose context and KHR_debug lines
+};
+
+struct RenderRun {
+    std::vector<std::string> written_paths; // in the order written
+};
+
+// The output folder is checked first, before the scene is read.
+std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter);
+
+} // namespace demo

@@ -1,0 +1,150 @@
+#include "render/camera.hpp"
+
+#include <frustum/projection.hpp>
+#include <frustum/queries.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string_view>
+
+namespace render {
+namespace {
+
+constexpr float kFramingFovyRad = 0.785398163f; // 45 degrees
+// Framing directions (from the target towards the eye): the default camera
+// looks from the front (+Z), slightly right and above; the automatic overview
+// from higher up and further right, so the main camera's frustum shows
+// from the side.
+constexpr glm::vec3 kFrontDirection{0.35f, 0.45f, 1.0f};
+constexpr glm::vec3 kOverviewDirection{1.0f, 0.9f, 1.1f};
+
+bool is_decimal(std::string_view text) {
+    return !text.empty() && text.size() <= 9 &&
+           std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+}
+
+int find_by_name(const scene::Scene& scene, std::string_view name) {
+    using Field = std::string scene::Camera::*;
+    for (const Field field : {&scene::Camera::name, &scene::Camera::node_name}) {
+        for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+            if (scene.cameras[i].*field == name) {
+                return static_cast<int>(i);
+            }
+        }
+    }
+    return -1;
+}
+
+std::string camera_list(const scene::Scene& scene) {
+    if (scene.cameras.empty()) {
+        return "the scene has no cameras";
+    }
+    std::string text = "the scene's cameras are: ";
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+        text += (i ? ", " : "") + scene.cameras[i].name;
+    }
+    return text;
+}
+
+scene::Bounds including(scene::Bounds bounds, const glm::vec3& point) {
+    bounds.min = glm::min(bounds.min, point);
+    bounds.max = glm::max(bounds.max, point);
+    return bounds;
+}
+
+} // namespace
+
+frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float aspect_when_unset) {
+    const auto depth = frustum::DepthRange::ZeroToOne;
+    frustum::Result<frustum::MatrixPair<float>> projection =
+        frustum::Error{"render::camera_pair(): camera '" + camera.name + "': orthographic camera without zfar"};
+    if (camera.kind == scene::Camera::Kind::Perspective) {
+        projection = frustum::perspective<float>(camera.yfov_rad, camera.aspect.value_or(aspect_when_unset),
+                                                 camera.znear_m, camera.zfar_m, depth);
+    } else if (camera.zfar_m) {
+        projection = frustum::orthographic<float>(-camera.xmag, camera.xmag, -camera.ymag, camera.ymag,
+                                                  camera.znear_m, *camera.zfar_m, depth);
+    }
+    if (!projection) {
+        return frustum::Error{"render::camera_pair(): camera '" + camera.name + "': " + projection.error()};
+    }
+    // camera_to_world = [R | t] is rigid (scene.hpp), so world_to_camera = [R^T | -R^T t].
+    const glm::mat3 rotation_transposed = glm::transpose(glm::mat3(camera.camera_to_world));
+    const glm::vec3 translation(camera.camera_to_world[3]);
+    const auto view = frustum::RigidTransform<float>::from_rotation_translation(rotation_transposed,
+                                                                                -(rotation_transposed * translation));
+    return frustum::compose(*projection, view);
+}
+
+frustum::Result<frustum::MatrixPair<float>> framing_camera(const scene::Bounds& bounds,
+                                                           const glm::vec3& from_direction, float aspect) {
+    const glm::vec3 center = (bounds.min + bounds.max) * 0.5f;
+    const float half_diagonal_m = glm::length(bounds.max - bounds.min) * 0.5f;
+    const float radius_m = half_diagonal_m > 0.0f ? half_diagonal_m : 1.0f;
+    // The sphere fits when its radius subtends the smaller half field of view.
+    const float half_fovy_rad = kFramingFovyRad * 0.5f;
+    const float half_fovx_rad = std::atan(aspect * std::tan(half_fovy_rad));
+    const float distance_m = radius_m / std::sin(std::min(half_fovy_rad, half_fovx_rad));
+    const glm::vec3 eye = center + glm::normalize(from_direction) * distance_m;
+    auto view = frustum::look_at<float>(eye, center, glm::vec3(0.0f, 1.0f, 0.0f));
+    if (!view) {
+        return frustum::Error{"render::framing_camera(): " + view.error()};
+    }
+    // distance > radius (sin < 1), so near > 0.
+    const float near_m = (distance_m - radius_m) * 0.5f;
+    const float far_m = distance_m + radius_m * 2.0f;
+    auto projection = frustum::perspective<float>(kFramingFovyRad, aspect, near_m, far_m, frustum::DepthRange::ZeroToOne);
+    if (!projection) {
+        return frustum::Error{"render::framing_camera(): " + projection.error()};
+    }
+    return frustum::compose(*projection, *view);
+}
+
+frustum::Result<int> find_camera(const scene::Scene& scene, const std::optional<std::string>& selector) {
+    if (!selector) {
+        const int main = find_by_name(scene, "main");
+        return main >= 0 ? main : (scene.cameras.empty() ? -1 : 0);
+    }
+    if (const int named = find_by_name(scene, *selector); named >= 0) {
+        return named;
+    }
+    if (is_decimal(*selector)) {
+        const int index = std::stoi(*selector);
+        if (static_cast<std::size_t>(index) < scene.cameras.size()) {
+            return index;
+        }
+    }
+    return frustum::Error{"render::find_camera(): no camera '" + *selector + "'; " + camera_list(scene)};
+}
+
+frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera, int width_px, int height_px) {
+    const float aspect = static_cast<float>(width_px) / static_cast<float>(height_px);
+    const bool from_file = main_camera >= 0 && static_cast<std::size_t>(main_camera) < scene.cameras.size();
+    auto main = from_file ? camera_pair(scene.cameras[static_cast<std::size_t>(main_camera)], aspect)
+                          : framing_camera(scene.world_bounds, kFrontDirection, aspect);
+    if (!main) {
+        return frustum::Error{main.error()};
+    }
+    const std::string main_name = from_file ? scene.cameras[static_cast<std::size_t>(main_camera)].name : "framing";
+
+    const int overview_index = find_by_name(scene, "overview");
+    if (overview_index >= 0 && overview_index != main_camera) {
+        auto overview = camera_pair(scene.cameras[static_cast<std::size_t>(overview_index)], aspect);
+        if (!overview) {
+            return frustum::Error{overview.error()};
+        }
+        return Cameras{{main_name, *main}, {"overview", *overview}};
+    }
+    // Automatic: frame the scene together with the main camera's eye (when
+    // finite: an orthographic eye is at infinity).
+    const glm::vec4 eye = frustum::to_point(frustum::key_points(*main).eye, frustum::infinity_tolerance<float>());
+    const scene::Bounds bounds = eye.w == 1.0f ? including(scene.world_bounds, glm::vec3(eye)) : scene.world_bounds;
+    auto overview = framing_camera(bounds, kOverviewDirection, aspect);
+    if (!overview) {
+        return frustum::Error{overview.error()};
+    }
+    return Cameras{{main_name, *main}, {"automatic overview", *overview}};
+}
+
+} // namespace render

@@ -1,0 +1,42 @@
+// What the renderer can draw (one image per Effect) and how the mirror
+// effect builds its reflection camera, with their command-line names.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace render {
+
+enum class Effect {
+    Plain,   // the scene from the camera
+    Mirror,  // plus the planar mirror's reflection (paper §5.2 / §5.3)
+    Tiles,   // the plain frame stitched from cropped tiles (paper §5.1)
+    Frustum, // an outside view with the camera frustums drawn from their key points (paper §3.2)
+};
+
+inline constexpr Effect kAllEffects[] = {Effect::Plain, Effect::Mirror, Effect::Tiles, Effect::Frustum};
+
+// "plain", "mirror", "tiles", "frustum".
+std::string_view to_string(Effect effect);
+// Inverse of to_string(Effect); empty for any other text.
+std::optional<Effect> parse_effect(std::string_view text);
+
+enum class MirrorMethod {
+    // frustum::mirror(): reflect (§5.2, eq. 16) then oblique near plane =
+    // the mirror plane, cropped to the mirror's screen rectangle (§5.1).
+    Oblique,
+    // frustum::mirror_rectangle(MirrorFit::Exact) (§5.3 with NOTES.md
+    // erratum 5): the unreflected scene from the reflected eye through the
+    // mirror rectangle.
+    Rectangle,
+    // frustum::reflect() alone, cropped: no oblique near plane, so what lies
+    // behind the mirror shows up in it. A counter-example for tests and demos.
+    ReflectOnly,
+};
+
+// "oblique", "rectangle", "reflect_only".
+std::string_view to_string(MirrorMethod method);
+// Inverse of to_string(MirrorMethod); empty for any other text.
+std::optional<MirrorMethod> parse_mirror_method(std::string_view text);
+
+} // namespace render

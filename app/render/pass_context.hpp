@@ -1,0 +1,36 @@
+// What every pass draws with: the GL table, the programs, the uploaded
+// scene, the depth policy, and the frame's look.
+#pragma once
+
+#include "render/depth_policy.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/programs.hpp"
+
+#include <gl/context.hpp>
+#include <gl/functions.hpp>
+
+#include <glm/glm.hpp>
+
+namespace render {
+
+// One directional light plus ambient, in world space (scene.frag).
+struct Lighting {
+    glm::vec3 to_light{0.35f, 1.0f, 0.45f}; // towards the light; normalized when used
+    float ambient = 0.3f;
+    float diffuse = 0.75f;
+};
+
+// The frame's background: an sRGB-encoded sky blue.
+inline constexpr glm::vec4 kClearColor{0.62f, 0.74f, 0.86f, 1.0f};
+
+struct PassContext {
+    const gl::Functions& fn;
+    gl::Api api; // desktop core GL needs GL_PROGRAM_POINT_SIZE for gl_PointSize
+    const Programs& programs;
+    const GpuScene& scene;
+    const DepthPolicy& depth;
+    Lighting lighting;
+    glm::vec4 clear_color = kClearColor;
+};
+
+} // namespace render

@@ -1,0 +1,147 @@
+#include "render/programs.hpp"
+
+#include "render/embedded_shaders.hpp"
+
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace render {
+namespace {
+
+constexpr const char* kBuild = "render::Programs::build()";
+
+// Inserts `defines` after the "#version" line, which must stay first.
+std::string with_defines(std::string_view source, std::string_view defines) {
+    const std::size_t line_end = source.find('\n') + 1;
+    return std::string(source.substr(0, line_end)) + std::string(defines) + std::string(source.substr(line_end));
+}
+
+// Looks up uniforms, remembering the first that is missing.
+class UniformFinder {
+public:
+    UniformFinder(const gl::Functions& fn, const gl::Program& program, const char* program_name)
+        : fn_(fn), program_(program), program_name_(program_name) {}
+
+    void find(GLint& location, const char* name) {
+        location = fn_.GetUniformLocation(program_.id(), name);
+        if (location < 0 && missing_.empty()) {
+            missing_ = name;
+        }
+    }
+
+    frustum::Status status() const {
+        if (missing_.empty()) {
+            return {};
+        }
+        return frustum::Error{std::string(kBuild) + ": " + program_name_ + " program has no active uniform " +
+                              missing_};
+    }
+
+private:
+    const gl::Functions& fn_;
+    const gl::Program& program_;
+    const char* program_name_;
+    std::string missing_;
+};
+
+frustum::Result<gl::Program> link(const gl::Functions& fn, std::string_view vertex, std::string_view fragment,
+                                  const char* name) {
+    auto program = gl::Program::build(fn, vertex, fragment);
+    if (!program) {
+        return frustum::Error{std::string(kBuild) + ": " + name + " program: " + program.error()};
+    }
+    return program;
+}
+
+frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_plane) {
+    const char* name = clip_plane ? "clipped scene" : "scene";
+    const std::string fragment =
+        clip_plane ? with_defines(shaders::scene_frag, "#define CLIP_PLANE 1\n") : std::string(shaders::scene_frag);
+    auto program = link(fn, shaders::scene_vert, fragment, name);
+    if (!program) {
+        return frustum::Error{program.error()};
+    }
+    SceneProgram p;
+    p.program = std::move(*program);
+    UniformFinder u(fn, p.program, name);
+    u.find(p.view_projection, "u_view_projection");
+    u.find(p.model, "u_model");
+    u.find(p.normal_matrix, "u_normal_matrix");
+    u.find(p.point_size_px, "u_point_size_px");
+    u.find(p.base_color, "u_base_color");
+    u.find(p.has_texture, "u_has_texture");
+    u.find(p.base_color_texture, "u_base_color_texture");
+    u.find(p.shading, "u_shading");
+    u.find(p.double_sided, "u_double_sided");
+    u.find(p.flat_normal_sign, "u_flat_normal_sign");
+    u.find(p.to_light, "u_to_light");
+    u.find(p.ambient, "u_ambient");
+    u.find(p.diffuse, "u_diffuse");
+    if (clip_plane) {
+        u.find(p.clip_plane, "u_clip_plane");
+    }
+    if (auto status = u.status(); !status) {
+        return frustum::Error{status.error()};
+    }
+    return p;
+}
+
+frustum::Result<MirrorCompositeProgram> build_mirror_composite(const gl::Functions& fn) {
+    auto program = link(fn, shaders::mirror_composite_vert, shaders::mirror_composite_frag, "mirror composite");
+    if (!program) {
+        return frustum::Error{program.error()};
+    }
+    MirrorCompositeProgram p;
+    p.program = std::move(*program);
+    UniformFinder u(fn, p.program, "mirror composite");
+    u.find(p.view_projection, "u_view_projection");
+    u.find(p.model, "u_model");
+    u.find(p.reflection_matrix, "u_reflection_matrix");
+    u.find(p.reflection, "u_reflection");
+    u.find(p.tint, "u_tint");
+    if (auto status = u.status(); !status) {
+        return frustum::Error{status.error()};
+    }
+    return p;
+}
+
+frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
+    auto program = link(fn, shaders::line_vert, shaders::line_frag, "line");
+    if (!program) {
+        return frustum::Error{program.error()};
+    }
+    LineProgram p;
+    p.program = std::move(*program);
+    UniformFinder u(fn, p.program, "line");
+    u.find(p.view_projection, "u_view_projection");
+    u.find(p.color, "u_color");
+    if (auto status = u.status(); !status) {
+        return frustum::Error{status.error()};
+    }
+    return p;
+}
+
+} // namespace
+
+frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
+    auto scene = build_scene(fn, false);
+    if (!scene) {
+        return frustum::Error{scene.error()};
+    }
+    auto scene_clipped = build_scene(fn, true);
+    if (!scene_clipped) {
+        return frustum::Error{scene_clipped.error()};
+    }
+    auto mirror_composite = build_mirror_composite(fn);
+    if (!mirror_composite) {
+        return frustum::Error{mirror_composite.error()};
+    }
+    auto line = build_line(fn);
+    if (!line) {
+        return frustum::Error{line.error()};
+    }
+    return Programs{std::move(*scene), std::move(*scene_clipped), std::move(*mirror_composite), std::move(*line)};
+}
+
+} // namespace render

@@ -1,0 +1,51 @@
+// The shader programs (GLSL ES 3.00 from shaders/, embedded at build time)
+// and their uniform locations, looked up once.
+#pragma once
+
+#include <frustum/result.hpp>
+#include <gl/functions.hpp>
+#include <gl/objects.hpp>
+
+namespace render {
+
+// shaders/scene.vert + scene.frag: lit geometry.
+struct SceneProgram {
+    gl::Program program;
+    GLint view_projection = -1, model = -1, normal_matrix = -1, point_size_px = -1;
+    GLint base_color = -1, has_texture = -1, base_color_texture = -1, shading = -1, double_sided = -1;
+    GLint flat_normal_sign = -1, to_light = -1, ambient = -1, diffuse = -1;
+    GLint clip_plane = -1; // only in the CLIP_PLANE variant
+};
+
+// u_shading values of scene.frag.
+enum class Shading : GLint {
+    VertexNormals = 0,
+    FlatNormals = 1, // from screen-space derivatives: triangles without normals
+    Unlit = 2,       // points and lines without normals
+};
+
+// shaders/mirror_composite.*: the mirror surface with a projective lookup.
+struct MirrorCompositeProgram {
+    gl::Program program;
+    GLint view_projection = -1, model = -1, reflection_matrix = -1, reflection = -1, tint = -1;
+};
+
+// shaders/line.*: flat-colour lines and points.
+struct LineProgram {
+    gl::Program program;
+    GLint view_projection = -1, color = -1;
+};
+
+struct Programs {
+    SceneProgram scene;
+    SceneProgram scene_clipped; // scene.frag with CLIP_PLANE: discards behind a world plane
+    MirrorCompositeProgram mirror_composite;
+    LineProgram line;
+
+    // Compile and link errors carry the info log; a uniform the code sets
+    // but the program lacks is an error too ("render::Programs::build():
+    // scene program has no active uniform u_model").
+    static frustum::Result<Programs> build(const gl::Functions& fn);
+};
+
+} // namespace render

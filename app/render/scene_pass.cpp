@@ -1,0 +1,112 @@
+#include "render/scene_pass.hpp"
+
+#include "render/face_state.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace render {
+namespace {
+
+constexpr float kPointSizePx = 3.0f;
+constexpr GLenum kProgramPointSize = 0x8642; // GL_PROGRAM_POINT_SIZE, desktop GL only
+
+// The cofactor matrix [b x c, c x a, a x b] of A = [a b c] is det(A) A^-T:
+// the inverse transpose up to a factor. Multiplied by sign(det) it points
+// normals the right way even for a mirroring transform, and it stays finite
+// for a singular one (the shader normalizes).
+glm::mat3 normal_matrix(const glm::mat4& model) {
+    const glm::mat3 a(model);
+    const glm::mat3 cofactor(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
+    return glm::determinant(a) < 0.0f ? -cofactor : cofactor;
+}
+
+Shading shading_for(const GpuPrimitive& primitive) {
+    if (primitive.has_normals) {
+        return Shading::VertexNormals;
+    }
+    const bool triangles = primitive.mode == GL_TRIANGLES || primitive.mode == GL_TRIANGLE_STRIP ||
+                           primitive.mode == GL_TRIANGLE_FAN;
+    return triangles ? Shading::FlatNormals : Shading::Unlit;
+}
+
+void set_material(const PassContext& ctx, const SceneProgram& p, const GpuMaterial& material) {
+    const gl::Functions& fn = ctx.fn;
+    fn.Uniform4fv(p.base_color, 1, glm::value_ptr(material.base_color_factor));
+    const bool textured = material.texture >= 0 &&
+                          static_cast<std::size_t>(material.texture) < ctx.scene.textures().size();
+    fn.Uniform1i(p.has_texture, textured ? 1 : 0);
+    fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
+    fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
+}
+
+} // namespace
+
+void set_frame_state(const PassContext& ctx) {
+    const gl::Functions& fn = ctx.fn;
+    fn.Disable(GL_SCISSOR_TEST);
+    fn.Disable(GL_BLEND);
+    fn.Enable(GL_DEPTH_TEST);
+    fn.DepthFunc(GL_LESS);
+    fn.DepthMask(GL_TRUE);
+    fn.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (ctx.api == gl::Api::GlCore) {
+        fn.Enable(kProgramPointSize);
+    }
+}
+
+void clear_frame(const PassContext& ctx) {
+    const gl::Functions& fn = ctx.fn;
+    fn.ClearColor(ctx.clear_color.r, ctx.clear_color.g, ctx.clear_color.b, ctx.clear_color.a);
+    fn.ClearDepthf(1.0f);
+    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void begin_frame(const PassContext& ctx) {
+    set_frame_state(ctx);
+    clear_frame(ctx);
+}
+
+void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
+    const gl::Functions& fn = ctx.fn;
+    const SceneProgram& p = draw.clip_plane ? ctx.programs.scene_clipped : ctx.programs.scene;
+    const frustum::MatrixPair<float> gpu_camera = ctx.depth.to_gpu(draw.camera);
+    const bool view_flips = draw.camera.flips_winding();
+
+    fn.UseProgram(p.program.id());
+    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(gpu_camera.matrix()));
+    fn.Uniform1f(p.point_size_px, kPointSizePx);
+    // A mirrored view turns cross(dFdx, dFdy) away from the viewer.
+    fn.Uniform1f(p.flat_normal_sign, view_flips ? -1.0f : 1.0f);
+    const glm::vec3 to_light = glm::normalize(glm::mat3(draw.pre_model) * ctx.lighting.to_light);
+    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
+    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
+    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
+    if (draw.clip_plane) {
+        fn.Uniform4fv(p.clip_plane, 1, glm::value_ptr(draw.clip_plane->abcd));
+    }
+    fn.ActiveTexture(GL_TEXTURE0);
+    fn.Uniform1i(p.base_color_texture, 0);
+
+    const auto& instances = ctx.scene.instances();
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        if (static_cast<int>(i) == draw.skip_instance) {
+            continue;
+        }
+        const glm::mat4 model = draw.pre_model * instances[i].world;
+        const bool model_flips = glm::determinant(glm::mat3(model)) < 0.0f;
+        fn.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model));
+        fn.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix(model)));
+        for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instances[i].mesh)]) {
+            const GpuMaterial& material = ctx.scene.material(primitive.material);
+            set_material(ctx, p, material);
+            fn.Uniform1i(p.shading, static_cast<GLint>(shading_for(primitive)));
+            set_face_state(fn, material.double_sided, view_flips, model_flips);
+            draw_primitive(fn, primitive);
+        }
+    }
+    fn.BindVertexArray(0);
+    fn.BindTexture(GL_TEXTURE_2D, 0);
+    restore_face_state(fn);
+}
+
+} // namespace render

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Renders the showcase scene with every effect (plain, mirror, tiles,
+# frustum) into out/ plus a contact sheet, and prints where they are.
+# `make demo` runs it as: bash scripts/demo.sh BUILD_DIR
+#
+#   bash scripts/demo.sh BUILD_DIR [--update-docs]
+#
+# --update-docs also renders small (320x180) copies into docs/images/. Those
+# are tracked files, so only this flag touches them; plain `make demo`
+# leaves the work tree as it was. Exits non-zero when anything fails.
+set -euo pipefail
+
+usage="usage: bash scripts/demo.sh BUILD_DIR [--update-docs]"
+if [[ $# -lt 1 || $# -gt 2 ]]; then
+  echo "$usage" >&2
+  exit 2
+fi
+build_dir=$1
+update_docs=0
+if [[ $# -eq 2 ]]; then
+  if [[ $2 != --update-docs ]]; then
+    echo "demo.sh: unknown option '$2'; $usage" >&2
+    exit 2
+  fi
+  update_docs=1
+fi
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+demo=$build_dir/app/demo/frustum-demo
+if [[ ! -x $demo ]]; then
+  echo "demo.sh: $demo not found; build first (make build)" >&2
+  exit 1
+fi
+
+# 640x360: the main camera's 16:9, a few seconds on llvmpipe.
+out=$root/out
+"$demo" render --effect all --size 640x360 --out "$out" >/dev/null
+echo "demo images in $out:"
+for name in plain mirror tiles frustum; do
+  echo "  $out/$name.png"
+done
+echo "contact sheet: $out/contact_sheet.png"
+
+if [[ $update_docs -eq 1 ]]; then
+  docs=$root/docs/images
+  mkdir -p "$docs"
+  "$demo" render --effect all --size 320x180 --out "$docs" >/dev/null
+  echo "updated $docs/{plain,mirror,tiles,frustum,contact_sheet}.png"
+fi

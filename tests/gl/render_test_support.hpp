@@ -1,0 +1,199 @@
+// Shared by the render_*_test.cpp files: the showcase scene, a renderer on
+// some backend, mirror-pixel masks, masked comparison, and saving the
+// images of a failed comparison next to the test binary.
+#pragma once
+
+#include "gl_test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <image/compare.hpp>
+#include <image/image.hpp>
+#include <image/png.hpp>
+#include <render/camera.hpp>
+#include <render/renderer.hpp>
+#include <scene/load_gltf.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace render_test {
+
+// The showcase's main camera is 16:9; keep test images small.
+inline constexpr int kWidthPx = 256;
+inline constexpr int kHeightPx = 144;
+
+inline const scene::Scene& showcase() {
+    static const scene::Scene loaded = [] {
+        auto result = scene::load_gltf(std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf");
+        REQUIRE_MESSAGE(result.ok(), result.error());
+        return std::move(*result);
+    }();
+    return loaded;
+}
+
+inline render::Cameras showcase_cameras(int width_px = kWidthPx, int height_px = kHeightPx) {
+    const auto index = render::find_camera(showcase(), std::nullopt);
+    REQUIRE_MESSAGE(index.ok(), index.error());
+    auto cameras = render::make_cameras(showcase(), *index, width_px, height_px);
+    REQUIRE_MESSAGE(cameras.ok(), cameras.error());
+    return std::move(*cameras);
+}
+
+inline render::RenderOptions options(int width_px = kWidthPx, int height_px = kHeightPx) {
+    render::RenderOptions o;
+    o.width_px = width_px;
+    o.height_px = height_px;
+    o.mirror_tint = glm::vec3(1.0f); // a perfect mirror: reflection pixels compare 1:1
+    return o;
+}
+
+// A context, its table and a renderer of `scene`. Members die in reverse
+// order: the renderer (and its GL objects) before the context.
+struct RenderEnvironment {
+    std::unique_ptr<gl_test::Environment> env;
+    std::optional<render::Renderer> renderer;
+
+    image::Image render(render::Effect effect, const render::Cameras& cameras, const render::RenderOptions& o) const {
+        auto picture = renderer->render(effect, cameras, o);
+        REQUIRE_MESSAGE(picture.ok(), picture.error());
+        return std::move(*picture);
+    }
+};
+
+// Null (after a MESSAGE) when `backend` cannot make a context.
+inline std::unique_ptr<RenderEnvironment> make_renderer(gl::Backend backend, const scene::Scene& scene = showcase()) {
+    auto env = gl_test::make_environment(backend);
+    if (!env) {
+        return nullptr;
+    }
+    auto out = std::make_unique<RenderEnvironment>();
+    out->env = std::move(env);
+    auto renderer = render::Renderer::create(*out->env->context, out->env->fn, scene);
+    REQUIRE_MESSAGE(renderer.ok(), renderer.error());
+    out->renderer.emplace(std::move(*renderer));
+    return out;
+}
+
+// EGL, else OSMesa; null (after MESSAGEs) when neither works.
+inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& scene = showcase()) {
+    for (gl::Backend backend : gl_test::kBackends) {
+        if (auto env = make_renderer(backend, scene)) {
+            return env;
+        }
+    }
+    return nullptr;
+}
+
+// <test binary's folder>/render_test_output (the build tree), created on demand.
+inline std::filesystem::path output_dir() {
+    std::error_code error;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    const auto dir = (error ? std::filesystem::current_path() : exe.parent_path()) / "render_test_output";
+    std::filesystem::create_directories(dir, error);
+    return dir;
+}
+
+// Saves a, b and their amplified difference as <stem>-a.png, -b.png, -diff.png.
+inline void save_failure(const std::string& stem, const image::Image& a, const image::Image& b) {
+    const auto dir = output_dir();
+    const auto diff = image::diff_image(a, b);
+    REQUIRE_MESSAGE(diff.ok(), diff.error());
+    for (const auto& [suffix, picture] : {std::pair<const char*, const image::Image*>{"-a.png", &a},
+                                         {"-b.png", &b}, {"-diff.png", &*diff}}) {
+        const auto status = image::write_png(*picture, (dir / (stem + suffix)).string());
+        CHECK_MESSAGE(status.ok(), status.error());
+    }
+    MESSAGE("saved " << stem << "-{a,b,diff}.png in " << dir.string());
+}
+
+// Pixels of one image, selected by a mask (true = compared).
+using Mask = std::vector<bool>;
+
+inline int count(const Mask& mask) { return static_cast<int>(std::count(mask.begin(), mask.end(), true)); }
+
+// The visible mirror pixels: the composite with tint 0 paints exactly them
+// black, and nothing else in the showcase is pure black (ambient light).
+inline Mask mirror_mask(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
+    o.mirror_tint = glm::vec3(0.0f);
+    const image::Image black = r.render(render::Effect::Mirror, cameras, o);
+    Mask mask(static_cast<std::size_t>(black.width * black.height));
+    for (int y = 0; y < black.height; ++y) {
+        for (int x = 0; x < black.width; ++x) {
+            const image::Rgba p = image::pixel_at(black, x, y);
+            mask[static_cast<std::size_t>(y * black.width + x)] = p[0] == 0 && p[1] == 0 && p[2] == 0;
+        }
+    }
+    return mask;
+}
+
+struct MaskedDiff {
+    int compared = 0;    // pixels in the mask
+    int pixels_over = 0; // of them, with some RGB channel differing by more than the tolerance
+    int max_abs = 0;     // largest channel difference in the mask
+    double mean_abs = 0; // mean |a - b| over the RGB channels of the mask's pixels
+};
+
+inline MaskedDiff compare_masked(const image::Image& a, const image::Image& b, const Mask& mask, int tolerance) {
+    REQUIRE(a.width == b.width);
+    REQUIRE(a.height == b.height);
+    MaskedDiff d;
+    long long sum = 0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            if (!mask[static_cast<std::size_t>(y * a.width + x)]) {
+                continue;
+            }
+            ++d.compared;
+            const image::Rgba p = image::pixel_at(a, x, y), q = image::pixel_at(b, x, y);
+            int worst = 0;
+            for (std::size_t c = 0; c < 3; ++c) {
+                const int difference = std::abs(int{p[c]} - int{q[c]});
+                worst = std::max(worst, difference);
+                sum += difference;
+            }
+            d.max_abs = std::max(d.max_abs, worst);
+            d.pixels_over += worst > tolerance ? 1 : 0;
+        }
+    }
+    d.mean_abs = d.compared > 0 ? static_cast<double>(sum) / (3.0 * d.compared) : 0.0;
+    return d;
+}
+
+// The marker's lit red: red high, green and blue near zero (no other
+// showcase colour comes close: orange has g >= 0.5, purple b >= 0.75).
+inline bool is_marker_red(const image::Rgba& p) { return p[0] >= 100 && p[1] <= 40 && p[2] <= 40; }
+
+// Pixels of the mask more than 2 LSB away from the clear colour.
+inline int count_not_sky(const image::Image& picture, const Mask& mask) {
+    const image::Rgba sky{static_cast<std::uint8_t>(render::kClearColor.r * 255.0f + 0.5f),
+                          static_cast<std::uint8_t>(render::kClearColor.g * 255.0f + 0.5f),
+                          static_cast<std::uint8_t>(render::kClearColor.b * 255.0f + 0.5f), 255};
+    int not_sky = 0;
+    for (int y = 0; y < picture.height; ++y) {
+        for (int x = 0; x < picture.width; ++x) {
+            not_sky += mask[static_cast<std::size_t>(y * picture.width + x)] &&
+                       !gl_test::near(image::pixel_at(picture, x, y), sky, 2);
+        }
+    }
+    return not_sky;
+}
+
+inline int count_red(const image::Image& picture, const Mask& mask) {
+    int red = 0;
+    for (int y = 0; y < picture.height; ++y) {
+        for (int x = 0; x < picture.width; ++x) {
+            red += mask[static_cast<std::size_t>(y * picture.width + x)] && is_marker_red(image::pixel_at(picture, x, y));
+        }
+    }
+    return red;
+}
+
+} // namespace render_test
