@@ -131,6 +131,10 @@ Material build_material(const tinygltf::Model& model, const tinygltf::Material& 
         material.base_color_texture = model.textures[texture.index].source;
     }
     material.double_sided = source.doubleSided;
+    material.alpha_mode = source.alphaMode == "BLEND"  ? AlphaMode::Blend
+                          : source.alphaMode == "MASK" ? AlphaMode::Mask
+                                                       : AlphaMode::Opaque;
+    material.alpha_cutoff = static_cast<float>(source.alphaCutoff);
     return material;
 }
 
@@ -242,6 +246,18 @@ Bounds bounds_of(const Scene& scene) {
 Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& nodes, Scene& scene) {
     for (const WorldNode& flat : nodes) {
         const tinygltf::Node& node = model.nodes[flat.node];
+        // Finite inputs can still overflow single precision when composed
+        // down the hierarchy (or exceed it alone: a translation of 1e39).
+        const glm::mat4 world_f(flat.world);
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                if (!std::isfinite(world_f[c][r])) {
+                    return Error{"node " + std::to_string(flat.node) +
+                                 (node.name.empty() ? "" : " (\"" + node.name + "\")") +
+                                 " has a world transform too large for single precision"};
+                }
+            }
+        }
         int instance = -1;
         if (node.mesh >= 0) {
             instance = static_cast<int>(scene.instances.size());

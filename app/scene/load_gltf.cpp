@@ -8,6 +8,8 @@
 #include "uri_check.hpp"
 #include "validate.hpp"
 
+#include "text/one_line.hpp"
+
 #include <cstdio>
 #include <limits>
 #include <utility>
@@ -74,8 +76,10 @@ Status preflight(const std::vector<unsigned char>& bytes, bool is_glb) {
 } // namespace
 
 frustum::Result<Scene> load_gltf(const std::string& path, const LoadOptions& options) {
+    // Messages are one line: file names and uris from the input may hold
+    // control characters, which are shown escaped.
     auto fail = [&path](const std::string& what) {
-        return Error{"scene::load_gltf(): " + path + ": " + what};
+        return Error{"scene::load_gltf(): " + text::one_line(path) + ": " + text::one_line(what)};
     };
     frustum::Result<detail::FsSandbox> sandbox =
         detail::FsSandbox::for_model(path, options.max_file_bytes);

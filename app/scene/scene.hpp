@@ -18,11 +18,17 @@ struct Image {
     std::vector<std::uint8_t> rgba; // width * height * 4
 };
 
+// glTF alphaMode: OPAQUE ignores alpha, MASK discards below alpha_cutoff,
+// BLEND is alpha-blended (drawn after the opaque geometry).
+enum class AlphaMode { Opaque, Mask, Blend };
+
 struct Material {
     std::string name;
     glm::vec4 base_color_factor{1.0f};
     int base_color_texture = -1; // index into Scene::images, -1 = none
     bool double_sided = false;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f; // MASK only
 };
 
 // glTF primitive modes, numbered as in the glTF spec (and GL).

@@ -6,6 +6,8 @@
 #include "vectors/parse_request.hpp"
 #include "vectors/response.hpp"
 
+#include "text/one_line.hpp"
+
 #include <istream>
 #include <ostream>
 
@@ -94,19 +96,19 @@ Exit status:
 }
 
 int run_frustum_vectors(std::istream& in, std::ostream& out, std::ostream& err) {
-    const auto text = read_all(in);
-    if (!text) {
-        err << kPrefix << text.error() << '\n';
+    const auto input = read_all(in);
+    if (!input) {
+        err << kPrefix << text::one_line(input.error()) << '\n';
         return in.bad() ? kExitIoError : kExitBadInput;
     }
-    const auto document = read_json(*text);
+    const auto document = read_json(*input);
     if (!document) {
-        err << kPrefix << document.error() << '\n';
+        err << kPrefix << text::one_line(document.error()) << '\n';
         return kExitBadInput;
     }
     const auto request = parse_request(*document);
     if (!request) {
-        err << kPrefix << request.error() << '\n';
+        err << kPrefix << text::one_line(request.error()) << '\n';
         return kExitBadInput;
     }
     std::vector<Outcome> outcomes;

@@ -38,6 +38,27 @@ double column_error(const Mat4<float>& value, const Mat4<double>& reference) {
     return std::min(worst[0], worst[1]);
 }
 
+// How well a float pair agrees with itself: the componentwise residual
+// max_ij |(M inv - I)_ij| / (|M| |inv|)_ij, computed in double. A float
+// matrix and its glm::inverse agree by construction (a few eps); an
+// analytically updated inverse tracks the exact operation instead, so it
+// agrees with its own rounded M a little less.
+double pair_residual(const Mat4<float>& m, const Mat4<float>& inv) {
+    const glm::dmat4 md(m), id(inv);
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            double product = 0.0, scale = 0.0;
+            for (int k = 0; k < 4; ++k) {
+                product += md[k][r] * id[c][k];
+                scale += std::abs(md[k][r] * id[c][k]);
+            }
+            worst = std::max(worst, std::abs(product - (c == r ? 1.0 : 0.0)) / scale);
+        }
+    }
+    return worst;
+}
+
 struct Stats {
     std::vector<double> errors;
     void add(double e) { errors.push_back(e); }
@@ -84,6 +105,7 @@ struct Row {
     bool has_paper = false;
     int rejected = 0; // cases the float operation refused (the double one did not)
     int analytic_not_worse = 0; // cases where analytic error <= glm::inverse error
+    Stats analytic_residual, reinvert_residual;
 };
 
 // Adds one case's errors; a float operation that refused the case (the
@@ -95,8 +117,11 @@ void measure(Row& row, const frustum::Result<MatrixPair<float>>& analytic, const
         ++row.rejected;
         return;
     }
+    const bench::RawPair<float> rebuilt = baseline();
     const double analytic_error = column_error(analytic->inverse(), reference);
-    const double baseline_error = column_error(baseline(), reference);
+    const double baseline_error = column_error(rebuilt.inverse, reference);
+    row.analytic_residual.add(pair_residual(analytic->matrix(), analytic->inverse()));
+    row.reinvert_residual.add(pair_residual(rebuilt.matrix, rebuilt.inverse));
     row.analytic.add(analytic_error);
     row.reinvert.add(baseline_error);
     row.analytic_not_worse += analytic_error <= baseline_error ? 1 : 0;
@@ -153,6 +178,7 @@ int main(int argc, char** argv) {
                 "(mean / p99 / p99.9 / max of the worst column's relative error).\n\n", count);
     std::printf("| operation | depth range | analytic (library) | glm::inverse | paper eq. 24-27 literal | cases where analytic <= glm | refused in float |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
+    std::vector<std::pair<std::string, std::vector<Row>>> residual_rows;
     for (DepthRange depth : {DepthRange::ZeroToOne, DepthRange::MinusOneToOne, DepthRange::ReversedZeroToOne}) {
         const auto cases = bench::make_mirror_cases(count, depth, 1234u);
         Row crop("crop"), reflect("reflect"), clip("clip_oblique"), mirror("mirror"), rect("mirror_rectangle (exact)"),
@@ -169,21 +195,21 @@ int main(int argc, char** argv) {
             const auto reference = [](const frustum::Result<MatrixPair<double>>& r) { return glm::inverse(r->matrix()); };
             const auto ref_crop = reference(frustum::crop(c.camera, crop_rect));
             measure(crop, frustum::crop(camera, crop_rect_f),
-                    [&] { return bench::crop_reinvert(bench::raw(camera), crop_rect_f).inverse; }, ref_crop);
+                    [&] { return bench::crop_reinvert(bench::raw(camera), crop_rect_f); }, ref_crop);
 
             const auto ref_reflect = reference(frustum::reflect(c.camera, c.mirror_plane));
             measure(reflect, frustum::reflect(camera, plane),
-                    [&] { return bench::reflect_reinvert(bench::raw(camera), plane).inverse; }, ref_reflect);
+                    [&] { return bench::reflect_reinvert(bench::raw(camera), plane); }, ref_reflect);
 
             const auto ref_clip = reference(frustum::clip_oblique(c.camera, c.mirror_plane.flipped()));
             const auto clipped = frustum::clip_oblique(camera, behind);
-            measure(clip, clipped, [&] { return bench::clip_reinvert(bench::raw(camera), behind, depth).inverse; },
+            measure(clip, clipped, [&] { return bench::clip_reinvert(bench::raw(camera), behind, depth); },
                     ref_clip);
             if (clipped) clip.paper.add(column_error(paper_literal_clip_inverse(camera, behind), ref_clip));
 
             const auto ref_mirror = reference(frustum::mirror(c.camera, c.mirror_plane));
             const auto mirrored = frustum::mirror(camera, plane);
-            measure(mirror, mirrored, [&] { return bench::mirror_reinvert(bench::raw(camera), plane, depth).inverse; },
+            measure(mirror, mirrored, [&] { return bench::mirror_reinvert(bench::raw(camera), plane, depth); },
                     ref_mirror);
             if (mirrored) {
                 mirror.paper.add(column_error(paper_literal_clip_inverse(*frustum::reflect(camera, plane), plane), ref_mirror));
@@ -194,7 +220,7 @@ int main(int argc, char** argv) {
                 const frustum::Rectangle<float> rect_f{glm::vec3(c.rectangle.corner), glm::vec3(c.rectangle.a1),
                                                        glm::vec3(c.rectangle.a2)};
                 const auto rect_pair = frustum::mirror_rectangle(rect_f, glm::vec3(c.eye), 100.0f, frustum::MirrorFit::Exact, depth);
-                measure(rect, rect_pair, [&] { return glm::inverse(rect_pair->matrix()); },
+                measure(rect, rect_pair, [&] { return bench::RawPair<float>{rect_pair->matrix(), glm::inverse(rect_pair->matrix())}; },
                         glm::inverse(rect_d->matrix()));
             }
 
@@ -203,7 +229,7 @@ int main(int argc, char** argv) {
                     chain_analytic(c.camera, c.mirror_plane, tilt_a.normalized(), tilt_b.normalized()).matrix());
                 measure(chain, frustum::Result<MatrixPair<float>>(
                                    chain_analytic(camera, plane, unit<float>(tilt_a), unit<float>(tilt_b))),
-                        [&] { return chain_reinvert(camera, plane, unit<float>(tilt_a), unit<float>(tilt_b), depth).inverse; },
+                        [&] { return chain_reinvert(camera, plane, unit<float>(tilt_a), unit<float>(tilt_b), depth); },
                         ref_chain);
             } else {
                 ++chain.rejected;
@@ -211,6 +237,16 @@ int main(int argc, char** argv) {
         }
         for (Row* row : {&crop, &reflect, &clip, &mirror, &rect, &chain}) {
             print_row(*row, depth);
+        }
+        residual_rows.push_back({std::string(frustum::to_string(depth)), {crop, reflect, clip, mirror, rect, chain}});
+    }
+    std::printf("\nPair self-consistency: componentwise residual of M M^-1 = I (mean / max), float.\n\n");
+    std::printf("| operation | depth range | analytic pair | M + glm::inverse(M) |\n|---|---|---|---|\n");
+    for (auto& [depth_name, rows] : residual_rows) {
+        for (Row& row : rows) {
+            std::printf("| %s | %s | %.2e / %.2e | %.2e / %.2e |\n", row.op.c_str(), depth_name.c_str(),
+                        row.analytic_residual.mean(), row.analytic_residual.quantile(1.0),
+                        row.reinvert_residual.mean(), row.reinvert_residual.quantile(1.0));
         }
     }
     return 0;
