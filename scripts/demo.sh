@@ -5,9 +5,10 @@
 #
 #   bash scripts/demo.sh BUILD_DIR [--update-docs]
 #
-# --update-docs also renders small (320x180) copies into docs/images/. Those
-# are tracked files, so only this flag touches them; plain `make demo`
-# leaves the work tree as it was. Exits non-zero when anything fails.
+# It first prints a walkthrough of the math on one camera (frustum-explain).
+# --update-docs also copies the images into docs/images/ (the README shows
+# them). Those are tracked files, so only this flag touches them; plain
+# `make demo` leaves the work tree as it was. Exits non-zero when anything fails.
 set -euo pipefail
 
 usage="usage: bash scripts/demo.sh BUILD_DIR [--update-docs]"
@@ -32,6 +33,12 @@ if [[ ! -x $demo ]]; then
   exit 1
 fi
 
+explain=$build_dir/app/explain/frustum-explain
+if [[ -x $explain ]]; then
+  "$explain"
+  echo
+fi
+
 # 640x360: the main camera's 16:9, a few seconds on llvmpipe.
 out=$root/out
 "$demo" render --effect all --size 640x360 --out "$out" >/dev/null
@@ -44,6 +51,8 @@ echo "contact sheet: $out/contact_sheet.png"
 if [[ $update_docs -eq 1 ]]; then
   docs=$root/docs/images
   mkdir -p "$docs"
-  "$demo" render --effect all --size 320x180 --out "$docs" >/dev/null
+  for name in plain mirror tiles frustum contact_sheet; do
+    cp "$out/$name.png" "$docs/$name.png"
+  done
   echo "updated $docs/{plain,mirror,tiles,frustum,contact_sheet}.png"
 fi
