@@ -1,5 +1,7 @@
-// An offscreen GL context, whichever backend made it. Contexts render only
-// into framebuffer objects (gl::OffscreenTarget); none has a visible surface.
+// A GL context, whichever backend made it. The offscreen backends render
+// only into framebuffer objects (gl::OffscreenTarget) and have no visible
+// surface; gl::GlfwEglWindow (glfw_egl_window.hpp) adds a window's
+// framebuffer 0.
 //
 // Threading: a context is current on the thread that created it (create()
 // leaves it current) until another one is made current there. Destroy every

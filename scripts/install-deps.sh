@@ -15,7 +15,12 @@ packages=(
   libglfw3-dev          # desktop window
   libbenchmark-dev      # Google Benchmark (bench targets)
 )
-if [ "${1:-}" = "--window" ]; then packages+=(xvfb x11-apps imagemagick); fi
+for flag in "$@"; do
+  case "$flag" in
+    --window) packages+=(xvfb x11-apps imagemagick) ;;
+    --bench) packages+=(gnuplot-nox) ;; # scripts/plot-bench.sh
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,8 @@
 #include "demo/command_line.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <string_view>
 #include <tuple>
 #include <utility>
@@ -55,7 +57,8 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
         } else if (const auto effect = render::parse_effect(value)) {
             r.effects = {*effect};
         } else {
-            return usage("unknown effect " + quoted + " (expected mirror, tiles, frustum, plain or all)");
+            return usage("unknown effect " + quoted +
+                         " (expected mirror, tiles, frustum, curved, lens, nonaffine, plain or all)");
         }
     } else if (name == "--size") {
         const auto size = parse_pair(value, kMaxSidePx);
@@ -89,6 +92,10 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
             return usage("unknown mirror method " + quoted + " (expected oblique, rectangle or reflect_only)");
         }
         r.mirror = *method;
+    } else if (name == "--patches" || name == "--sagitta" || name == "--cap") {
+        return apply_curved_option(r.curved, name, value);
+    } else if (name == "--lens-grid" || name == "--lens-power") {
+        return apply_lens_option(r, name, value);
     } else {
         return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
     }
@@ -97,7 +104,8 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
 
 bool takes_value(std::string_view name) {
     for (std::string_view known : {"--scene", "--camera", "--effect", "--tiles", "--size", "--backend", "--depth",
-                                   "--mirror", "--out"}) {
+                                   "--mirror", "--out", "--patches", "--sagitta", "--cap", "--lens-grid",
+                                   "--lens-power"}) {
         if (name == known) {
             return true;
         }
@@ -106,6 +114,63 @@ bool takes_value(std::string_view name) {
 }
 
 } // namespace
+
+std::optional<Failure> apply_curved_option(render::CurvedMirrorOptions& curved, std::string_view name,
+                                           const std::string& value) {
+    const std::string quoted = "'" + value + "'";
+    if (name == "--patches") {
+        int patches = 0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), patches);
+        if (value.empty() || error != std::errc() || end != value.data() + value.size() || patches < 1 ||
+            patches > render::kMaxCurvedPatches) {
+            return usage("--patches must be a whole number in 1.." + std::to_string(render::kMaxCurvedPatches) +
+                         ", got " + quoted);
+        }
+        curved.patches = patches;
+    } else if (name == "--sagitta") {
+        float sagitta_m = 0.0f;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), sagitta_m);
+        if (value.empty() || error != std::errc() || end != value.data() + value.size() || !(sagitta_m >= 0.0f) ||
+            !std::isfinite(sagitta_m)) {
+            return usage("--sagitta must be a length in metres >= 0, got " + quoted);
+        }
+        curved.sagitta_m = sagitta_m;
+    } else if (name == "--cap") {
+        const auto shape = render::parse_cap_shape(value);
+        if (!shape) {
+            return usage("unknown cap shape " + quoted + " (expected sphere or cylinder)");
+        }
+        curved.shape = *shape;
+    } else {
+        return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
+    }
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_lens_option(RenderRequest& request, std::string_view name, const std::string& value) {
+    const std::string quoted = "'" + value + "'";
+    const char* first = value.data();
+    const char* last = value.data() + value.size();
+    if (name == "--lens-grid") {
+        int grid = 0;
+        const auto [end, error] = std::from_chars(first, last, grid);
+        if (value.empty() || error != std::errc() || end != last || grid < 1 || grid > kMaxLensGrid) {
+            return usage("--lens-grid must be a whole number in 1.." + std::to_string(kMaxLensGrid) + ", got " +
+                         quoted);
+        }
+        request.lens_grid = grid;
+    } else if (name == "--lens-power") {
+        float power = 0.0f;
+        const auto [end, error] = std::from_chars(first, last, power);
+        if (value.empty() || error != std::errc() || end != last || !(power > 0.0f && power <= 8.0f)) {
+            return usage("--lens-power must be a number in (0, 8], got " + quoted);
+        }
+        request.lens_power = power;
+    } else {
+        return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
+    }
+    return std::nullopt;
+}
 
 std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::vector<std::string>& args) {
     if (args.empty()) {
@@ -142,6 +207,13 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
                      " needs at least one pixel per tile, but the image is " + std::to_string(request.width_px) +
                      "x" + std::to_string(request.height_px));
     }
+    const bool lens = std::find(request.effects.begin(), request.effects.end(), render::Effect::Lens) !=
+                      request.effects.end();
+    if (lens && request.lens_grid > std::min(request.width_px, request.height_px)) {
+        return usage("--lens-grid " + std::to_string(request.lens_grid) +
+                     " needs at least one pixel per tile, but the image is " + std::to_string(request.width_px) +
+                     "x" + std::to_string(request.height_px));
+    }
     return request;
 }
 
@@ -150,6 +222,10 @@ std::string help_text() {
            "\n"
            "usage:\n"
            "  frustum-demo render [options]\n"
+           "  frustum-demo window [options]  (the effects in an interactive window; --help there)\n"
+           "  frustum-demo curved-report [options]  (curved mirror vs ray tracing; --help there)\n"
+           "  frustum-demo lens-report [options]  (tiled lens vs per-pixel reference; --help there)\n"
+           "  frustum-demo nonaffine-report [options]  (eq. 36 remedies vs ray casting; --help there)\n"
            "  frustum-demo --help\n"
            "\n"
            "options of render:\n"
@@ -158,7 +234,8 @@ std::string help_text() {
            "                      (found through FRUSTUM_ASSETS_DIR, compiled in at build time)\n"
            "  --camera NAME|INDEX camera by name (glTF camera, else its node) or index;\n"
            "                      default \"main\", else camera 0, else one framing the scene\n"
-           "  --effect E          plain | mirror | tiles | frustum | all (default all)\n"
+           "  --effect E          plain | mirror | tiles | frustum | curved | lens | nonaffine |\n"
+           "                      all (default all)\n"
            "  --tiles NxM         columns x rows of the tiles effect (default 3x2)\n"
            "  --size WxH          image size in pixels, 1..8192 each (default 640x360)\n"
            "  --backend B         egl | osmesa (default: egl, falling back to osmesa with a note)\n"
@@ -168,6 +245,13 @@ std::string help_text() {
            "  --mirror M          reflection camera: oblique (reflect + oblique near plane,\n"
            "                      default) | rectangle (reflected eye through the mirror) |\n"
            "                      reflect_only (no near plane: shows what is behind the mirror)\n"
+           "  --patches N         curved effect: the convex cap in G x G patches, 1..64 (default 4)\n"
+           "  --sagitta M         curved effect: the cap's bulge at its centre in metres (default 0.3;\n"
+           "                      0 = the planar mirror; at most half the mirror's half-diagonal)\n"
+           "  --cap C             curved effect: sphere (default) | cylinder (axis along the\n"
+           "                      mirror's second side)\n"
+           "  --lens-grid N       lens effect: N x N tiles, 1..256 (default 16)\n"
+           "  --lens-power P      lens effect: p of eq. 34, in (0, 8] (default 2; 1 = no lens)\n"
            "  --out DIR           output folder, created if missing (default out)\n"
            "  --verbose           print the GL context and its KHR_debug messages\n"
            "\n"

@@ -3,17 +3,24 @@
 //                       [--tiles NxM] [--size WxH] [--backend egl|osmesa]
 //                       [--depth zero_to_one|minus_one_to_one]
 //                       [--mirror oblique|rectangle|reflect_only] [--out DIR] [--verbose]
+//                       [--patches N] [--sagitta M] [--cap sphere|cylinder]
+//                       [--lens-grid N] [--lens-power P]
+//   frustum-demo curved-report [options]   (demo/curved_report.hpp)
+//   frustum-demo lens-report [options]     (demo/lens_report.hpp)
+//   frustum-demo nonaffine-report [options] (demo/nonaffine_report.hpp)
 //   frustum-demo --help
 #pragma once
 
 #include "demo/failure.hpp"
 
 #include <gl/context.hpp>
+#include <render/curved_mirror.hpp>
 #include <render/depth_policy.hpp>
 #include <render/effect.hpp>
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -28,6 +35,9 @@ struct RenderRequest {
     std::optional<gl::Backend> backend; // unset: EGL, falling back to OSMesa with a note
     render::DepthPath depth = render::DepthPath::ClipControlWhenAvailable;
     render::MirrorMethod mirror = render::MirrorMethod::Oblique;
+    render::CurvedMirrorOptions curved; // --patches, --sagitta, --cap
+    int lens_grid = 16;                 // --lens-grid: tiles per side of the lens effect
+    float lens_power = 2.0f;            // --lens-power: p of eq. 34
     std::string out_dir = "out";
     bool verbose = false;
 };
@@ -39,5 +49,15 @@ struct HelpRequest {};
 std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::vector<std::string>& args);
 
 std::string help_text();
+
+// Applies --patches N (1..64), --sagitta M (metres, >= 0) or --cap
+// sphere|cylinder; a usage Failure names the value. Shared with curved-report.
+std::optional<Failure> apply_curved_option(render::CurvedMirrorOptions& curved, std::string_view name,
+                                           const std::string& value);
+
+// Applies --lens-grid N (1..kMaxLensGrid) or --lens-power P (0 < P <= 8); a
+// usage Failure names the value. Shared with lens-report.
+inline constexpr int kMaxLensGrid = 256;
+std::optional<Failure> apply_lens_option(RenderRequest& request, std::string_view name, const std::string& value);
 
 } // namespace demo

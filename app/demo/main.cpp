@@ -1,14 +1,74 @@
 // frustum-demo: the only place that prints. Results (paths written) go to
 // stdout; progress, notes and errors to stderr.
 #include "demo/command_line.hpp"
+#include "demo/curved_report.hpp"
 #include "demo/run_render.hpp"
+#include "demo/warp_reports.hpp"
+#include "demo/window_main.hpp"
 
 #include <iostream>
 #include <string>
 #include <vector>
 
+namespace {
+
+// frustum-demo curved-report: the Markdown report on stdout, progress on stderr.
+int curved_report_main(const std::vector<std::string>& args) {
+    const auto parsed = demo::parse_curved_report(args);
+    if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
+        std::cerr << "frustum-demo: error: " << failure->message << '\n';
+        return static_cast<int>(failure->status);
+    }
+    if (std::holds_alternative<demo::HelpRequest>(parsed)) {
+        std::cout << demo::curved_report_help();
+        return 0;
+    }
+    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
+    const demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
+    const auto outcome = demo::run_curved_report(std::get<demo::CurvedReportRequest>(parsed), reporter);
+    if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
+        std::cerr << "frustum-demo: error: " << failure->message << '\n';
+        return static_cast<int>(failure->status);
+    }
+    std::cout << std::get<demo::CurvedReport>(outcome).markdown;
+    return 0;
+}
+
+// frustum-demo lens-report | nonaffine-report: as curved-report.
+int warp_report_main(const std::vector<std::string>& args) {
+    const auto parsed = demo::parse_warp_report(args);
+    if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
+        std::cerr << "frustum-demo: error: " << failure->message << '\n';
+        return static_cast<int>(failure->status);
+    }
+    if (std::holds_alternative<demo::HelpRequest>(parsed)) {
+        std::cout << demo::warp_report_help(args[0]);
+        return 0;
+    }
+    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
+    const demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
+    const auto outcome = demo::run_warp_report(std::get<demo::WarpReportRequest>(parsed), reporter);
+    if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
+        std::cerr << "frustum-demo: error: " << failure->message << '\n';
+        return static_cast<int>(failure->status);
+    }
+    std::cout << std::get<demo::WarpReport>(outcome).markdown;
+    return 0;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+    if (!args.empty() && args[0] == "curved-report") {
+        return curved_report_main(args);
+    }
+    if (!args.empty() && (args[0] == "lens-report" || args[0] == "nonaffine-report")) {
+        return warp_report_main(args);
+    }
+    if (!args.empty() && args[0] == "window") {
+        return demo::window_main(args); // prints its own results and errors
+    }
     const auto parsed = demo::parse_command_line(args);
     if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
         std::cerr << "frustum-demo: error: " << failure->message << '\n';

@@ -85,6 +85,9 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     options.height_px = request.height_px;
     options.depth = request.depth;
     options.mirror_method = request.mirror;
+    options.curved = request.curved;
+    options.lens_grid = request.lens_grid;
+    options.lens_power = request.lens_power;
     options.tile_columns = request.tile_columns;
     options.tile_rows = request.tile_rows;
 

@@ -8,6 +8,9 @@ std::string_view to_string(Effect effect) {
     case Effect::Mirror: return "mirror";
     case Effect::Tiles: return "tiles";
     case Effect::Frustum: return "frustum";
+    case Effect::Curved: return "curved";
+    case Effect::Lens: return "lens";
+    case Effect::NonAffine: return "nonaffine";
     }
     return "?";
 }

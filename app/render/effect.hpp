@@ -12,11 +12,15 @@ enum class Effect {
     Mirror,  // plus the planar mirror's reflection (paper §5.2 / §5.3)
     Tiles,   // the plain frame stitched from cropped tiles (paper §5.1)
     Frustum, // an outside view with the camera frustums drawn from their key points (paper §3.2)
+    Curved,  // a convex cap in place of the planar mirror, reflected patch by patch (paper §4.3)
+    Lens,      // a magnifier at the scene's lens spot, one lens frustum per tile (paper §5.4)
+    NonAffine, // a crossed-slits frustum of six planes, eq. 36 per vertex (paper §6)
 };
 
-inline constexpr Effect kAllEffects[] = {Effect::Plain, Effect::Mirror, Effect::Tiles, Effect::Frustum};
+inline constexpr Effect kAllEffects[] = {Effect::Plain, Effect::Mirror, Effect::Tiles, Effect::Frustum,
+                                        Effect::Curved, Effect::Lens,   Effect::NonAffine};
 
-// "plain", "mirror", "tiles", "frustum".
+// "plain", "mirror", "tiles", "frustum", "curved", "lens", "nonaffine".
 std::string_view to_string(Effect effect);
 // Inverse of to_string(Effect); empty for any other text.
 std::optional<Effect> parse_effect(std::string_view text);

@@ -52,6 +52,9 @@ public:
 
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     const std::vector<scene::Instance>& instances() const { return instances_; }
+    // Places instance `index` (< instances().size()) anew, e.g. a mirror the
+    // user moves (Renderer::move_mirror()).
+    void set_instance_world(std::size_t index, const glm::mat4& world) { instances_.at(index).world = world; }
     const std::vector<gl::Texture>& textures() const { return textures_; }
     // index -1 (or none given by the file): glTF's default material, white and single-sided.
     const GpuMaterial& material(int index) const;

@@ -122,6 +122,26 @@ frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
     return p;
 }
 
+frustum::Result<CurvedMirrorProgram> build_curved_mirror(const gl::Functions& fn) {
+    auto program = link(fn, shaders::curved_mirror_vert, shaders::curved_mirror_frag, "curved mirror");
+    if (!program) {
+        return frustum::Error{program.error()};
+    }
+    CurvedMirrorProgram p;
+    p.program = std::move(*program);
+    UniformFinder u(fn, p.program, "curved mirror");
+    u.find(p.view_projection, "u_view_projection");
+    u.find(p.patch_matrix, "u_patch_matrix");
+    u.find(p.atlas, "u_atlas");
+    u.find(p.tile, "u_tile");
+    u.find(p.half_texel, "u_half_texel");
+    u.find(p.tint, "u_tint");
+    if (auto status = u.status(); !status) {
+        return frustum::Error{status.error()};
+    }
+    return p;
+}
+
 } // namespace
 
 frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
@@ -141,7 +161,21 @@ frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
     if (!line) {
         return frustum::Error{line.error()};
     }
-    return Programs{std::move(*scene), std::move(*scene_clipped), std::move(*mirror_composite), std::move(*line)};
+    auto curved_mirror = build_curved_mirror(fn);
+    if (!curved_mirror) {
+        return frustum::Error{curved_mirror.error()};
+    }
+    auto lens_remap = build_lens_remap_program(fn);
+    if (!lens_remap) {
+        return frustum::Error{lens_remap.error()};
+    }
+    auto non_affine = build_non_affine_program(fn);
+    if (!non_affine) {
+        return frustum::Error{non_affine.error()};
+    }
+    return Programs{std::move(*scene),         std::move(*scene_clipped), std::move(*mirror_composite),
+                    std::move(*line),          std::move(*curved_mirror), std::move(*lens_remap),
+                    std::move(*non_affine)};
 }
 
 } // namespace render

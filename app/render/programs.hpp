@@ -2,6 +2,8 @@
 // and their uniform locations, looked up once.
 #pragma once
 
+#include "render/warp_programs.hpp"
+
 #include <frustum/result.hpp>
 #include <gl/functions.hpp>
 #include <gl/objects.hpp>
@@ -30,6 +32,12 @@ struct MirrorCompositeProgram {
     GLint view_projection = -1, model = -1, reflection_matrix = -1, reflection = -1, tint = -1;
 };
 
+// shaders/curved_mirror.*: a curved mirror's patch with a lookup in its atlas tile.
+struct CurvedMirrorProgram {
+    gl::Program program;
+    GLint view_projection = -1, patch_matrix = -1, atlas = -1, tile = -1, half_texel = -1, tint = -1;
+};
+
 // shaders/line.*: flat-colour lines and points.
 struct LineProgram {
     gl::Program program;
@@ -41,6 +49,9 @@ struct Programs {
     SceneProgram scene_clipped; // scene.frag with CLIP_PLANE: discards behind a world plane
     MirrorCompositeProgram mirror_composite;
     LineProgram line;
+    CurvedMirrorProgram curved_mirror;
+    LensRemapProgram lens_remap; // lens reference (warp_programs.hpp)
+    NonAffineProgram non_affine; // non-affine effect (warp_programs.hpp)
 
     // Compile and link errors carry the info log; a uniform the code sets
     // but the program lacks is an error too ("render::Programs::build():

@@ -1,6 +1,9 @@
 #include "render/renderer.hpp"
 
+#include "render/curved_pass.hpp"
 #include "render/frustum_view_pass.hpp"
+#include "render/lens_pass.hpp"
+#include "render/mirror_motion.hpp"
 #include "render/mirror_pass.hpp"
 #include "render/scene_pass.hpp"
 #include "render/tile_pass.hpp"
@@ -8,6 +11,7 @@
 #include <gl/errors.hpp>
 #include <gl/offscreen_target.hpp>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,7 +34,12 @@ FrustumLineStyle line_style(const scene::Bounds& bounds) {
 Renderer::Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
                    const scene::Scene& scene)
     : context_(&context), fn_(&fn), gpu_scene_(std::move(gpu_scene)), programs_(std::move(programs)),
-      mirror_(scene.mirror), bounds_(scene.world_bounds) {}
+      mirror_(scene.mirror), bounds_(scene.world_bounds), scene_mirror_(scene.mirror), lens_(scene.lens),
+      object_geometry_(WorldGeometry::in_object_space(scene)) {
+    for (const scene::Instance& instance : scene.instances) {
+        scene_worlds_.push_back(instance.world);
+    }
+}
 
 frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl::Functions& fn,
                                            const scene::Scene& scene) {
@@ -55,27 +64,93 @@ PassContext Renderer::pass_context(const DepthPolicy& depth, const Lighting& lig
 
 frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cameras,
                                                const RenderOptions& options) const {
-    auto depth = DepthPolicy::apply(*fn_, *context_, options.depth);
-    if (!depth) {
-        return frustum::Error{depth.error()};
-    }
     auto frame = gl::OffscreenTarget::create(*fn_, {options.width_px, options.height_px});
     if (!frame) {
         return frustum::Error{"render::Renderer::render(): " + frame.error()};
     }
-    const PassContext ctx = pass_context(*depth, options.lighting);
-    if (auto status = draw(effect, ctx, *frame, cameras, options); !status) {
-        return frustum::Error{status.error()};
-    }
-    if (auto status = gl::check_error(*fn_, "render::Renderer::render()"); !status) {
+    if (auto status = render_into(effect, cameras, options, *frame); !status) {
         return frustum::Error{status.error()};
     }
     return frame->read_rgba8();
 }
 
+frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+                                      const gl::OffscreenTarget& frame) const {
+    auto depth = DepthPolicy::apply(*fn_, *context_, options.depth);
+    if (!depth) {
+        return frustum::Error{depth.error()};
+    }
+    frame.bind();
+    const PassContext ctx = pass_context(*depth, options.lighting);
+    if (auto status = draw(effect, ctx, frame, cameras, options); !status) {
+        return status;
+    }
+    frame.bind();
+    return gl::check_error(*fn_, "render::Renderer::render()");
+}
+
+frustum::Status Renderer::move_mirror(const glm::mat4& motion, const std::vector<int>& attached) {
+    constexpr const char* kWhere = "render::Renderer::move_mirror()";
+    if (!scene_mirror_) {
+        return frustum::Error{std::string(kWhere) + ": the scene has no mirror"};
+    }
+    if (auto rigid = check_rigid_motion(motion, kWhere); !rigid) {
+        return rigid;
+    }
+    std::vector<int> moving = attached;
+    if (scene_mirror_->instance >= 0) {
+        moving.push_back(scene_mirror_->instance);
+    }
+    for (int index : moving) {
+        if (index < 0 || static_cast<std::size_t>(index) >= scene_worlds_.size()) {
+            return frustum::Error{std::string(kWhere) + ": attached instance " + std::to_string(index) +
+                                  " is out of range (the scene has " + std::to_string(scene_worlds_.size()) +
+                                  " instances)"};
+        }
+    }
+    for (int index : moved_instances_) {
+        gpu_scene_.set_instance_world(static_cast<std::size_t>(index), scene_worlds_[static_cast<std::size_t>(index)]);
+    }
+    for (int index : moving) {
+        const auto i = static_cast<std::size_t>(index);
+        gpu_scene_.set_instance_world(i, motion * scene_worlds_[i]);
+    }
+    moved_instances_ = std::move(moving);
+    mirror_ = moved_mirror(*scene_mirror_, motion);
+    return {};
+}
+
 frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
                                const Cameras& cameras, const RenderOptions& options) const {
     switch (effect) {
+    case Effect::Lens: {
+        auto lens = lens_on_near_plane(cameras.main.pair, lens_, options.lens_power);
+        if (!lens) {
+            return frustum::Error{lens.error()};
+        }
+        // The disc is hidden: opaque (alphaMode is not read), it would cover the magnified spot.
+        const int disc = lens_ ? lens_->instance : -1;
+        return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
+    }
+    case Effect::NonAffine: {
+        auto slits = crossed_slits_frustum(cameras.main.pair, options.nonaffine, ctx.depth.gpu_range());
+        if (!slits) {
+            return frustum::Error{slits.error()};
+        }
+        const WorldGeometry world = object_geometry_.placed(gpu_scene_.instances());
+        if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, options.nonaffine); !stats) {
+            return frustum::Error{stats.error()};
+        }
+        return {};
+    }
+    case Effect::Curved:
+        if (mirror_) {
+            return draw_curved_mirror_frame(
+                ctx, frame, CurvedDraw{cameras.main.pair, *mirror_, options.curved, options.mirror_tint, bounds_});
+        }
+        begin_frame(ctx); // no mirror: the plain frame
+        draw_scene(ctx, SceneDraw{cameras.main.pair});
+        return {};
     case Effect::Mirror:
         if (mirror_) {
             return draw_mirror_frame(

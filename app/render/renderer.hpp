@@ -5,11 +5,14 @@
 #pragma once
 
 #include "render/camera.hpp"
+#include "render/curved_mirror.hpp"
 #include "render/depth_policy.hpp"
 #include "render/effect.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
+#include "render/world_geometry.hpp"
 
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
@@ -21,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace render {
 
@@ -31,7 +35,11 @@ struct RenderOptions {
     MirrorMethod mirror_method = MirrorMethod::Oblique; // mirror and frustum effects
     int tile_columns = 3;                              // tiles effect
     int tile_rows = 2;
-    glm::vec3 mirror_tint{0.92f, 0.95f, 1.0f};
+    glm::vec3 mirror_tint{0.92f, 0.95f, 1.0f};         // mirror and curved effects
+    CurvedMirrorOptions curved;                        // curved effect: cap shape, sagitta, G x G patches
+    int lens_grid = 16;                                // lens effect: lens_grid x lens_grid tiles
+    float lens_power = 2.0f;                           // lens effect: p of eq. 34 (> 1 magnifies)
+    NonAffineOptions nonaffine;                        // nonaffine effect: frustum, subdivision, culling
     Lighting lighting;
 };
 
@@ -47,6 +55,22 @@ public:
     // reflection) from cameras.overview; the others use cameras.main. The
     // mirror effect of a scene without a mirror is the plain frame.
     frustum::Result<image::Image> render(Effect effect, const Cameras& cameras, const RenderOptions& options) const;
+
+    // As render(), but into an existing target, which sets the size (the
+    // effect is laid out for frame.width() x frame.height(); options.width_px
+    // and height_px are not used), and leaves it bound. A window renders
+    // each frame this way and blits the target to its framebuffer.
+    frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+                                const gl::OffscreenTarget& frame) const;
+
+    // Moves the mirror for every later frame by `motion`, a rigid world
+    // transform (rotation + translation) relative to where the scene put it;
+    // the identity puts it back. Its rectangle, its surface instance and the
+    // instances in `attached` (e.g. a backing board) move together, so every
+    // effect sees the moved mirror. Errors: the scene has no mirror, an
+    // index out of range, or a motion that is not rigid, e.g.
+    // "render::Renderer::move_mirror(): motion must be rigid (det 1, orthonormal columns, last row 0 0 0 1), got det=8".
+    frustum::Status move_mirror(const glm::mat4& motion, const std::vector<int>& attached);
 
     // The depth range render() hands the GPU for `path` on this context.
     frustum::DepthRange gpu_depth_range(DepthPath path) const;
@@ -69,6 +93,13 @@ private:
     Programs programs_;
     std::optional<scene::MirrorRect> mirror_;
     scene::Bounds bounds_;
+    // Where the scene put the mirror and the instances (move_mirror() starts
+    // from these), and which instances it moved last.
+    std::optional<scene::MirrorRect> scene_mirror_;
+    std::vector<glm::mat4> scene_worlds_;
+    std::vector<int> moved_instances_;
+    std::optional<scene::LensSpot> lens_; // lens effect
+    WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame
 };
 
 } // namespace render

@@ -6,6 +6,7 @@
 #include "frustum/queries.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace frustum {
 
@@ -127,25 +128,51 @@ bool far_corners_in_front(const MatrixPair<T>& pair) {
 
 } // namespace
 
+namespace {
+
+// eq. 12: F . Q = 0 with F = |z_f - z_n| m3 - K_n N, for one far point.
 template <class T>
-Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const Vec3<T>& far_point, DepthRange depth) {
-    const auto rows = side_rows(planes, "from_planes");
-    if (!rows) {
-        return Error{rows.error()};
-    }
+Result<T> k_near_through(const SideRows<T>& rows, const Vec3<T>& far_point, DepthRange depth) {
     const Vec4<T> q(far_point, T(1));
     if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) {
         return detail::error_text("from_planes", "far point must be finite", detail::vector_text(far_point));
     }
-    const T in_front = glm::dot(rows->m3, q); // clip w of Q
-    const T beyond_near = rows->near.evaluate(q);
+    const T in_front = glm::dot(rows.m3, q); // clip w of Q
+    const T beyond_near = rows.near.evaluate(q);
     if (!(in_front > T(0)) || !(beyond_near > T(0))) {
         return detail::error_text("from_planes", "far point must be in front of the eye and beyond the near plane",
                                   "point=" + detail::vector_text(far_point) + " w=" + detail::number(in_front) +
                                       " near_distance=" + detail::number(beyond_near));
     }
-    // eq. 12: F . Q = 0 with F = |z_f - z_n| m3 - K_n N.
-    const T k_near = std::abs(clip_z_span<T>(depth)) * in_front / beyond_near;
+    return std::abs(clip_z_span<T>(depth)) * in_front / beyond_near;
+}
+
+} // namespace
+
+template <class T>
+Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const Vec3<T>& far_point, DepthRange depth) {
+    return from_planes(planes, std::vector<Vec3<T>>{far_point}, depth);
+}
+
+template <class T>
+Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector<Vec3<T>>& far_points,
+                                  DepthRange depth) {
+    const auto rows = side_rows(planes, "from_planes");
+    if (!rows) {
+        return Error{rows.error()};
+    }
+    if (far_points.empty()) {
+        return detail::error_text("from_planes", "needs at least one far point", "none");
+    }
+    // F(Q_i) >= 0 for every point <=> K_n <= K_n(Q_i): take the smallest.
+    T k_near = std::numeric_limits<T>::infinity();
+    for (const Vec3<T>& point : far_points) {
+        const auto k = k_near_through(*rows, point, depth);
+        if (!k) {
+            return Error{k.error()};
+        }
+        k_near = std::min(k_near, *k);
+    }
     return assemble(*rows, k_near, depth, "from_planes");
 }
 
@@ -176,6 +203,7 @@ Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>& planes, D
 
 #define FRUSTUM_INSTANTIATE(T)                                                                              \
     template Result<MatrixPair<T>> from_planes(const SidePlanes<T>&, const Vec3<T>&, DepthRange);           \
+    template Result<MatrixPair<T>> from_planes(const SidePlanes<T>&, const std::vector<Vec3<T>>&, DepthRange); \
     template Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>&, DepthRange, int);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)

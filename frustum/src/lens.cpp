@@ -102,8 +102,13 @@ Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<
                                   side_plane(eye, bottom_right, top_right, inside),
                                   side_plane(eye, bottom_left, bottom_right, inside),
                                   side_plane(eye, top_left, top_right, inside), camera_planes.near};
-        const Vec3<T> far_point = eye + (inside - eye) * far_ratio;
-        auto pair = from_planes(sides, far_point, camera.depth());
+        // The far plane keeps each moved corner's ray inside up to the
+        // camera's far distance (one far point would tilt it into the tile).
+        const std::vector<Vec3<T>> far_points{eye + (bottom_left - eye) * far_ratio,
+                                              eye + (bottom_right - eye) * far_ratio,
+                                              eye + (top_right - eye) * far_ratio,
+                                              eye + (top_left - eye) * far_ratio};
+        auto pair = from_planes(sides, far_points, camera.depth());
         if (!pair) {
             return detail::error_text("lens_tiles", "a tile's lens frustum is degenerate",
                                       "tile (" + detail::number(tile.column) + ", " + detail::number(tile.row) +

@@ -97,18 +97,10 @@ MirrorCase make_mirror_case(const std::string& label, double fraction) {
     return out;
 }
 
-frustum::Lens<float> showcase_lens(const frustum::MatrixPair<float>& camera) {
-    const auto frame = value_or_throw(frustum::near_plane_frame(camera), "near_plane_frame");
-    const scene::LensSpot spot = showcase().lens.value_or(scene::LensSpot{glm::vec3(0, 1, 0), 0.5f, -1});
-    const glm::vec3 normal = glm::normalize(glm::cross(frame.x_axis, frame.y_axis));
-    const float t = glm::dot(frame.center - frame.eye, normal) / glm::dot(spot.center - frame.eye, normal);
-    const glm::vec3 on_plane = frame.eye + t * (spot.center - frame.eye);
-    frustum::Lens<float> lens;
-    lens.center_m = glm::vec2(glm::dot(on_plane - frame.center, frame.x_axis),
-                              glm::dot(on_plane - frame.center, frame.y_axis));
-    lens.radius_m = spot.radius_m * t;
-    lens.power = 2.0f;
-    return lens;
+render::LensDraw lens_draw(int grid) {
+    const auto camera = main_camera();
+    const auto lens = value_or_throw(render::lens_on_near_plane(camera, showcase().lens, 2.0f), "lens");
+    return render::LensDraw{camera, lens, grid, showcase().lens ? showcase().lens->instance : -1};
 }
 
 std::unique_ptr<Gpu> make_gpu(gl::Backend backend, std::string& why) {

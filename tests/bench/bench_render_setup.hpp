@@ -11,6 +11,7 @@
 #include <gl/functions.hpp>
 #include <render/camera.hpp>
 #include <render/depth_policy.hpp>
+#include <render/lens_pass.hpp>
 #include <render/mirror_geometry.hpp>
 #include <render/pass_context.hpp>
 #include <render/renderer.hpp>
@@ -52,9 +53,10 @@ struct MirrorCase {
 };
 MirrorCase make_mirror_case(const std::string& label, double fraction);
 
-// The showcase's lens spot as a frustum::Lens on `camera`'s near plane
-// (centre and radius projected from the eye); power 2.
-frustum::Lens<float> showcase_lens(const frustum::MatrixPair<float>& camera);
+// The renderer's lens effect on the main camera, as Renderer draws it:
+// render::lens_on_near_plane() of the showcase's lens spot, power 2, the
+// lens disc not drawn; `grid` x `grid` tiles.
+render::LensDraw lens_draw(int grid);
 
 // A context of one backend, its entry points and a renderer of the showcase.
 // Members die in reverse order: renderer, table, context.

@@ -11,6 +11,13 @@ MatrixPair<double> lens_camera(DepthRange depth) {
     return compose(*projection, *view);
 }
 
+// The point at `distance_m` from the eye along the camera's view axis.
+glm::dvec3 frame_point_on_axis(const MatrixPair<double>& camera, double distance_m) {
+    const auto frame = near_plane_frame(camera);
+    const glm::dvec3 axis = glm::normalize(frame->center - frame->eye);
+    return frame->eye + distance_m * axis;
+}
+
 // Max |a - s b| / |s| over entries, s fitted on the largest entry of b:
 // "equal up to a positive factor".
 double factor_deviation(const glm::dmat4& a, const glm::dmat4& b, double* factor) {
@@ -24,6 +31,35 @@ double factor_deviation(const glm::dmat4& a, const glm::dmat4& b, double* factor
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) worst = std::max(worst, std::abs(a[c][r] - s * b[c][r]) / std::abs(s));
     return worst;
+}
+
+// Every point of a tile's four edges from the near plane out to the
+// camera's far distance is inside the tile frustum's depth range (the edges
+// lie on the side planes, so only z and w are checked).
+void check_edges_reach_far(const MatrixPair<double>& camera, const Lens<double>& lens) {
+    const auto frame = near_plane_frame(camera);
+    REQUIRE(frame.ok());
+    const auto tiles = lens_tiles(camera, lens, 256, 256, 8, 8);
+    REQUIRE(tiles.ok());
+    const auto camera_planes = planes(camera);
+    const double far_ratio =
+        std::abs(camera_planes.far->distance(frame->eye)) / std::abs(camera_planes.near.distance(frame->eye));
+    const double z_near = clip_z_near<double>(camera.depth()), z_far = clip_z_far<double>(camera.depth());
+    for (const auto& tile : *tiles) {
+        const auto k = key_points(tile.pair);
+        for (int i = 0; i < 4; ++i) {
+            const glm::dvec3 near_corner(to_point(k.corners[i], 1e-12));
+            for (double t : {1.0 + 1e-6, 2.0, 10.0, 0.5 * far_ratio, far_ratio * (1.0 - 1e-9)}) {
+                const glm::dvec3 point = frame->eye + t * (near_corner - frame->eye);
+                const glm::dvec4 clip = tile.pair.matrix() * glm::dvec4(point, 1.0);
+                CHECK(clip.w > 0.0);
+                const double depth = clip.z / clip.w;
+                CHECK((depth - z_near) * (z_far - z_near) >= -1e-9);
+                CHECK((z_far - depth) * (z_far - z_near) >= -1e-9);
+            }
+        }
+        CHECK(mtest::inverse_residual(tile.pair) < 1e-10);
+    }
 }
 
 } // namespace
@@ -92,6 +128,37 @@ TEST_CASE("lens tiles magnify inside the radius and keep shared corners seamless
     for (const auto& t : *tiles) {
         CHECK(mtest::inverse_residual(t.pair) < 1e-12);
     }
+}
+
+TEST_CASE("lens tiles keep every edge inside up to the camera's far distance") {
+    const auto camera = lens_camera(DepthRange::ZeroToOne);
+    const auto frame = near_plane_frame(camera);
+    REQUIRE(frame.ok());
+    // A magnifier as the demo uses it (R = 0.6 half-height, p = 2) and an
+    // extreme one (p = 3, R = half the half-height: outer corners thrown tens
+    // of near-plane sizes out, tiles far from parallelograms, whose far
+    // corners fall behind the eye: see lens.hpp).
+    check_edges_reach_far(camera, Lens<double>{glm::dvec2(0.1, -0.05), 0.6 * frame->half_height_m, 2.0});
+    check_edges_reach_far(camera, Lens<double>{glm::dvec2(0.1, -0.05), 0.5 * frame->half_height_m, 3.0});
+    for (DepthRange depth : {DepthRange::MinusOneToOne, DepthRange::ReversedZeroToOne}) {
+        CAPTURE(depth);
+        check_edges_reach_far(lens_camera(depth), Lens<double>{glm::dvec2(0.0), 0.6 * frame->half_height_m, 2.0});
+    }
+}
+
+TEST_CASE("from_planes with several far points takes the nearest plane that keeps them all inside") {
+    const auto camera = lens_camera(DepthRange::ZeroToOne);
+    const auto p = planes(camera);
+    const SidePlanes<double> sides{p.left, p.right, p.bottom, p.top, p.near};
+    const glm::dvec3 near_point(frame_point_on_axis(camera, 5.0)), far_point(frame_point_on_axis(camera, 20.0));
+    const auto both = from_planes(sides, std::vector<glm::dvec3>{far_point, near_point}, DepthRange::ZeroToOne);
+    // Keeping the point at 20 m inside keeps the one at 5 m inside too.
+    const auto nearest = from_planes(sides, far_point, DepthRange::ZeroToOne);
+    REQUIRE(both.ok());
+    REQUIRE(nearest.ok());
+    double factor = 0.0;
+    CHECK(factor_deviation(both->matrix(), nearest->matrix(), &factor) < 1e-12);
+    CHECK_FALSE(from_planes(sides, std::vector<glm::dvec3>{}, DepthRange::ZeroToOne).ok());
 }
 
 TEST_CASE("lens_tiles rejects bad lenses and cameras") {

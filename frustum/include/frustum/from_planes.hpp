@@ -12,6 +12,8 @@
 #include "frustum/plane.hpp"
 #include "frustum/result.hpp"
 
+#include <vector>
+
 namespace frustum {
 
 // Inward-positive planes in world space; they need not be normalized.
@@ -25,6 +27,17 @@ struct SidePlanes {
 //   K_n = |z_f - z_n| (m3 . Q) / (N . Q).
 template <class T>
 Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const Vec3<T>& far_point, DepthRange depth);
+
+// §4.1 for several points: of the far planes F = |z_f - z_n| m3 - K_n N
+// (they all contain the line where m3 and N meet), the nearest one that
+// keeps every point inside: K_n = min_i |z_f - z_n| (m3 . Q_i) / (N . Q_i).
+// Each point must be in front of the eye and beyond the near plane. Use it
+// when the side planes are skewed (m3 not parallel to N, e.g. lens tiles):
+// a single far point then tilts the far plane so much that it can cut the
+// other edges close to the eye.
+template <class T>
+Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector<Vec3<T>>& far_points,
+                                  DepthRange depth);
 
 // §4.2 with the stop criterion corrected (NOTES.md erratum 12): start at
 // eq. 13, K_n = |z_f - z_n| (m3.xyz . N.xyz) / |N.xyz|^2, step by the paper's

@@ -41,8 +41,14 @@ template <class T>
 Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera);
 
 // Tiles of a width_px x height_px image in the crop_tiles() layout, each
-// with its lens frustum. Far point of a tile: its moved centre pushed out to
-// the camera's far distance (the camera must be perspective with a finite
+// with its lens frustum. Far plane of a tile: the nearest that keeps its four
+// corner rays inside up to the camera's far distance, so nothing the camera
+// sees is cut off. A tile whose moved corners are not a parallelogram has
+// clip w varying over its near face; its far plane then pivots about the
+// line where w = 0 meets the near plane, and on the other edges it lies
+// beyond the far distance or never crosses them in front of the eye. Such
+// tiles render correctly but fail the literal §5.5 test (far corners
+// behind the eye): the limitation of affine frustums that §6 addresses (the camera must be perspective with a finite
 // far plane, without an oblique near plane).
 template <class T>
 Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,

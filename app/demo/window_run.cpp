@@ -1,0 +1,181 @@
+#include "demo/window_run.hpp"
+
+#include <gl/functions.hpp>
+#include <gl/glfw_egl_window.hpp>
+#include <gl/window_framebuffer.hpp>
+#include <image/png.hpp>
+#include <render/camera.hpp>
+#include <render/renderer.hpp>
+#include <scene/load_gltf.hpp>
+#include <window/controls.hpp>
+#include <window/frame.hpp>
+#include <window/frame_clock.hpp>
+#include <window/frame_painter.hpp>
+#include <window/mirror_pose.hpp>
+#include <window/orbit_camera.hpp>
+#include <window/window_cameras.hpp>
+
+#include <chrono>
+#include <optional>
+#include <utility>
+
+namespace demo {
+namespace {
+
+Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
+
+// Everything one frame loop needs, made once.
+struct Session {
+    scene::Scene scene;
+    int camera_index = -1;
+    // Destroyed in reverse: painter and renderer, then the table their
+    // objects point to, then the window with its context.
+    std::unique_ptr<gl::GlfwEglWindow> window;
+    std::unique_ptr<gl::Functions> fn;
+    std::optional<render::Renderer> renderer;
+    std::optional<window::FramePainter> painter;
+};
+
+std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest& request) {
+    auto session = std::make_unique<Session>();
+    auto scene = scene::load_gltf(request.scene_path);
+    if (!scene) {
+        return runtime(scene.error());
+    }
+    session->scene = std::move(*scene);
+    auto camera_index = render::find_camera(session->scene, request.camera);
+    if (!camera_index) {
+        return Failure{ExitStatus::UsageError, camera_index.error()};
+    }
+    session->camera_index = *camera_index;
+    gl::WindowOptions options;
+    options.title = window::window_title(request.effect, std::nullopt);
+    options.width = request.width_px;
+    options.height = request.height_px;
+    options.vsync = !request.frames; // scripted runs go as fast as they can
+    auto window = gl::GlfwEglWindow::create(options);
+    if (!window) {
+        return runtime("cannot open a window: " + window.error() + "; use `frustum-demo render` for offscreen images");
+    }
+    session->window = std::move(*window);
+    auto fn = gl::Functions::load(*session->window);
+    if (!fn) {
+        return runtime(fn.error());
+    }
+    session->fn = std::make_unique<gl::Functions>(*fn);
+    auto renderer = render::Renderer::create(*session->window, *session->fn, session->scene);
+    if (!renderer) {
+        return runtime(renderer.error());
+    }
+    session->renderer.emplace(std::move(*renderer));
+    auto painter = window::FramePainter::create(*session->fn);
+    if (!painter) {
+        return runtime(painter.error());
+    }
+    session->painter.emplace(std::move(*painter));
+    return session;
+}
+
+window::ViewerState initial_state(const WindowRequest& request) {
+    window::ViewerState state;
+    state.effect = request.effect;
+    state.tile_columns = request.tile_columns;
+    state.tile_rows = request.tile_rows;
+    state.mirror_method = request.mirror;
+    state.show_help = request.help_overlay;
+    state.show_inset = request.inset;
+    return state;
+}
+
+frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSize& size, const std::string& path) {
+    auto pixels = gl::read_window_pixels(fn, size.width_px, size.height_px);
+    if (!pixels) {
+        return frustum::Error{pixels.error()};
+    }
+    return image::write_png(*pixels, path);
+}
+
+} // namespace
+
+std::variant<WindowRun, Failure> run_window(const WindowRequest& request) {
+    auto opened = open_session(request);
+    if (auto* failure = std::get_if<Failure>(&opened)) {
+        return *failure;
+    }
+    Session& s = *std::get<std::unique_ptr<Session>>(opened);
+    const std::vector<int> attachments = window::mirror_attachments(s.scene);
+    const window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
+    window::Controls controls(window::control_scene(s.scene));
+    window::ViewerState state = initial_state(request);
+    window::MirrorPose applied_pose;
+    window::FrameClock clock;
+    std::optional<double> frame_ms;
+    render::Effect titled_effect = state.effect;
+    gl::FramebufferSize size = s.window->framebuffer_size();
+    std::optional<render::Cameras> cameras;
+    WindowRun run;
+
+    while (!s.window->should_close()) {
+        const bool minimized = size.width_px < 1 || size.height_px < 1;
+        const std::vector<gl::InputEvent> events = minimized ? s.window->wait_events() : s.window->poll_events();
+        // The framebuffer size (not the window size) sets the frame, its aspect and the tiles.
+        for (const gl::InputEvent& event : events) {
+            if (const auto* resized = std::get_if<gl::FramebufferResized>(&event)) {
+                size = {resized->width_px, resized->height_px};
+                cameras.reset();
+            }
+        }
+        if (size.width_px < 1 || size.height_px < 1) {
+            continue;
+        }
+        if (!cameras) {
+            auto made = window::window_cameras(s.scene, s.camera_index, size.width_px, size.height_px);
+            if (!made) {
+                return runtime(made.error());
+            }
+            cameras = std::move(*made);
+        }
+        for (const gl::InputEvent& event : events) {
+            controls.apply(event, cameras->main.pair, state);
+        }
+        if (state.quit) {
+            s.window->request_close();
+            break;
+        }
+        if (s.scene.mirror && state.mirror != applied_pose) {
+            if (auto moved = s.renderer->move_mirror(window::mirror_motion(*s.scene.mirror, state.mirror), attachments);
+                !moved) {
+                return runtime(moved.error());
+            }
+            applied_pose = state.mirror;
+        }
+        auto frame = window::make_frame(state, *cameras, projection, s.scene.world_bounds, size.width_px,
+                                        size.height_px);
+        if (!frame) {
+            return runtime(frame.error());
+        }
+        if (auto painted = s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px); !painted) {
+            return runtime(painted.error());
+        }
+        ++run.frames_drawn;
+        const bool last = request.frames && run.frames_drawn >= *request.frames;
+        if (last && request.screenshot) {
+            if (auto saved = save_screenshot(*s.fn, size, *request.screenshot); !saved) {
+                return runtime(saved.error());
+            }
+            run.written_paths.push_back(*request.screenshot);
+        }
+        s.window->swap_buffers();
+        if (auto mean = clock.tick(std::chrono::steady_clock::now()); mean || titled_effect != state.effect) {
+            frame_ms = mean ? mean : frame_ms;
+            titled_effect = state.effect;
+            s.window->set_title(window::window_title(state.effect, frame_ms));
+        }
+        if (last) {
+            break;
+        }
+    }
+    return run;
+}
+
+} // namespace demo

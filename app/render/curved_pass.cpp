@@ -1,0 +1,222 @@
+#include "render/curved_pass.hpp"
+
+#include "render/face_state.hpp"
+#include "render/scene_pass.hpp"
+
+#include <frustum/depth_range.hpp>
+#include <frustum/queries.hpp>
+#include <gl/errors.hpp>
+#include <gl/objects.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace render {
+namespace {
+
+constexpr const char* kDraw = "render::draw_curved_mirror_frame(): ";
+constexpr int kMaxAtlasSidePx = 4096; // see mirror_geometry.cpp
+constexpr int kMinTilePx = 4;
+constexpr int kMinCapQuads = 32; // the cap mesh has at least this many quads per side
+
+// The cap as one indexed triangle mesh, M x M quads (M = G * quads per
+// patch), its indices grouped by patch: patch (i, j) draws
+// `indices_per_patch` indices from (j G + i) indices_per_patch.
+struct CapMesh {
+    gl::VertexArray vertex_array;
+    gl::Buffer vertex_buffer, index_buffer;
+    GLsizei indices_per_patch = 0;
+};
+
+frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CurvedMirror& mirror, int grid) {
+    const int per_patch = (kMinCapQuads + grid - 1) / grid;
+    const int m = grid * per_patch;
+    std::vector<float> positions;
+    positions.reserve(static_cast<std::size_t>((m + 1) * (m + 1) * 3));
+    for (int y = 0; y <= m; ++y) {
+        for (int x = 0; x <= m; ++x) {
+            const glm::dvec3 p = mirror.at(static_cast<double>(x) / m, static_cast<double>(y) / m).position;
+            positions.insert(positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+        }
+    }
+    // Counter-clockwise seen from the reflecting side (a1 right, a2 up).
+    std::vector<std::uint32_t> indices;
+    indices.reserve(static_cast<std::size_t>(m * m * 6));
+    const auto vertex = [m](int x, int y) { return static_cast<std::uint32_t>(y * (m + 1) + x); };
+    for (int j = 0; j < grid; ++j) {
+        for (int i = 0; i < grid; ++i) {
+            for (int y = j * per_patch; y < (j + 1) * per_patch; ++y) {
+                for (int x = i * per_patch; x < (i + 1) * per_patch; ++x) {
+                    indices.insert(indices.end(), {vertex(x, y), vertex(x + 1, y), vertex(x + 1, y + 1),
+                                                   vertex(x, y), vertex(x + 1, y + 1), vertex(x, y + 1)});
+                }
+            }
+        }
+    }
+    CapMesh mesh;
+    auto vertex_array = gl::VertexArray::create(fn);
+    auto vertex_buffer = gl::Buffer::create(fn);
+    auto index_buffer = gl::Buffer::create(fn);
+    if (!vertex_array || !vertex_buffer || !index_buffer) {
+        return frustum::Error{kDraw + (!vertex_array ? vertex_array.error()
+                                       : !vertex_buffer ? vertex_buffer.error()
+                                                        : index_buffer.error())};
+    }
+    mesh.vertex_array = std::move(*vertex_array);
+    mesh.vertex_buffer = std::move(*vertex_buffer);
+    mesh.index_buffer = std::move(*index_buffer);
+    mesh.indices_per_patch = static_cast<GLsizei>(per_patch * per_patch * 6);
+    fn.BindVertexArray(mesh.vertex_array.id());
+    fn.BindBuffer(GL_ARRAY_BUFFER, mesh.vertex_buffer.id());
+    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size() * sizeof(float)), positions.data(),
+                  GL_STATIC_DRAW);
+    fn.EnableVertexAttribArray(kPositionLocation);
+    fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.index_buffer.id());
+    fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+                  indices.data(), GL_STATIC_DRAW);
+    fn.BindVertexArray(0);
+    fn.BindBuffer(GL_ARRAY_BUFFER, 0);
+    return mesh;
+}
+
+// Renders every patch's view into its tile: tile (i, j) is the rectangle
+// (i w, j h, w, h) of the atlas, from the bottom-left.
+frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const CurvedPlan& plan,
+                                                  const glm::ivec2& tile, int mirror_instance) {
+    auto atlas = gl::OffscreenTarget::create(
+        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::Depth24});
+    if (!atlas) {
+        return frustum::Error{kDraw + std::string("atlas: ") + atlas.error()};
+    }
+    const gl::Functions& fn = ctx.fn;
+    set_frame_state(ctx);
+    fn.Enable(GL_SCISSOR_TEST);
+    for (const PatchFrustum& patch : plan.patches) {
+        fn.Viewport(patch.i * tile.x, patch.j * tile.y, tile.x, tile.y);
+        fn.Scissor(patch.i * tile.x, patch.j * tile.y, tile.x, tile.y);
+        clear_frame(ctx);
+        if (patch.pair) {
+            SceneDraw draw(*patch.pair);
+            draw.skip_instance = mirror_instance;
+            draw_scene(ctx, draw);
+        }
+    }
+    fn.Disable(GL_SCISSOR_TEST);
+    return atlas;
+}
+
+void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const CurvedPlan& plan, const CapMesh& mesh,
+              const gl::OffscreenTarget& atlas, const glm::ivec2& tile) {
+    const gl::Functions& fn = ctx.fn;
+    const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
+    fn.UseProgram(p.program.id());
+    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(draw.camera).matrix()));
+    fn.Uniform3f(p.tint, draw.tint.r, draw.tint.g, draw.tint.b);
+    const glm::vec2 atlas_size(static_cast<float>(atlas.width()), static_cast<float>(atlas.height()));
+    fn.Uniform2f(p.half_texel, 0.5f / atlas_size.x, 0.5f / atlas_size.y);
+    fn.ActiveTexture(GL_TEXTURE0);
+    fn.BindTexture(GL_TEXTURE_2D, atlas.color_texture().id());
+    fn.Uniform1i(p.atlas, 0);
+    fn.BindVertexArray(mesh.vertex_array.id());
+    // The cap is single-sided: from behind it is culled like any surface.
+    set_face_state(fn, false, draw.camera.flips_winding(), false);
+    const glm::vec2 tile_uv = glm::vec2(tile) / atlas_size;
+    for (const PatchFrustum& patch : plan.patches) {
+        // Without a frustum any matrix will do: the lookup stays inside the
+        // tile, which holds only the clear colour.
+        const glm::mat4 matrix = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
+        fn.UniformMatrix4fv(p.patch_matrix, 1, GL_FALSE, glm::value_ptr(matrix));
+        fn.Uniform4f(p.tile, patch.i * tile_uv.x, patch.j * tile_uv.y, tile_uv.x, tile_uv.y);
+        const auto first = static_cast<std::size_t>(patch.j * plan.grid + patch.i) *
+                           static_cast<std::size_t>(mesh.indices_per_patch) * sizeof(std::uint32_t);
+        fn.DrawElements(GL_TRIANGLES, mesh.indices_per_patch, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first));
+    }
+    fn.BindVertexArray(0);
+    fn.BindTexture(GL_TEXTURE_2D, 0);
+    restore_face_state(fn);
+}
+
+} // namespace
+
+glm::ivec2 curved_tile_size(const CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
+                            int width_px, int height_px) {
+    const int largest = std::max(kMinTilePx, kMaxAtlasSidePx / grid);
+    const float sign = frustum::clip_z_span<float>(camera.depth()) > 0.0f ? 1.0f : -1.0f;
+    const float z_near = frustum::clip_z_near<float>(camera.depth());
+    // Pixels of the (grid + 1)^2 patch corners; a corner behind the near
+    // plane makes the lengths unknown: then the frame's longer side / G.
+    std::vector<glm::vec2> px;
+    for (int j = 0; j <= grid; ++j) {
+        for (int i = 0; i <= grid; ++i) {
+            const glm::dvec3 p = mirror.at(static_cast<double>(i) / grid, static_cast<double>(j) / grid).position;
+            const glm::vec4 clip = camera.matrix() * glm::vec4(glm::vec3(p), 1.0f);
+            if (!(sign * (clip.z - z_near * clip.w) > 0.0f && clip.w > 0.0f)) {
+                const int side = std::clamp((std::max(width_px, height_px) + grid - 1) / grid, kMinTilePx, largest);
+                return {side, side};
+            }
+            px.push_back((glm::vec2(clip) / clip.w * 0.5f + 0.5f) *
+                         glm::vec2(static_cast<float>(width_px), static_cast<float>(height_px)));
+        }
+    }
+    float along_a1 = 0.0f, along_a2 = 0.0f;
+    const auto at = [&](int i, int j) { return px[static_cast<std::size_t>(j * (grid + 1) + i)]; };
+    for (int j = 0; j <= grid; ++j) {
+        for (int i = 0; i <= grid; ++i) {
+            if (i < grid) along_a1 = std::max(along_a1, glm::distance(at(i, j), at(i + 1, j)));
+            if (j < grid) along_a2 = std::max(along_a2, glm::distance(at(i, j), at(i, j + 1)));
+        }
+    }
+    const auto side = [&](float length_px) {
+        return std::clamp(static_cast<int>(std::ceil(length_px)), kMinTilePx, largest);
+    };
+    return {side(along_a1), side(along_a2)};
+}
+
+frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                         const CurvedDraw& draw) {
+    const auto plain = [&]() -> frustum::Status {
+        frame.bind();
+        begin_frame(ctx);
+        draw_scene(ctx, SceneDraw{draw.camera});
+        return {};
+    };
+    auto mirror = CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
+    if (!mirror) {
+        return frustum::Error{kDraw + mirror.error()};
+    }
+    const glm::vec4 eye = frustum::to_point(frustum::key_points(draw.camera).eye, frustum::infinity_tolerance<float>());
+    if (eye.w != 1.0f) {
+        return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
+    }
+    auto plan = plan_curved_mirror(*mirror, glm::dvec3(glm::vec3(eye)), draw.bounds, draw.options.patches);
+    if (!plan) {
+        return frustum::Error{kDraw + plan.error()};
+    }
+    if (!plan->has_value()) {
+        return plain();
+    }
+    const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, frame.width(), frame.height());
+    auto atlas = render_atlas(ctx, **plan, tile, draw.mirror.instance);
+    if (!atlas) {
+        return frustum::Error{atlas.error()};
+    }
+    auto mesh = upload_cap(ctx.fn, *mirror, draw.options.patches);
+    if (!mesh) {
+        return frustum::Error{mesh.error()};
+    }
+    frame.bind();
+    begin_frame(ctx);
+    SceneDraw main(draw.camera);
+    main.skip_instance = draw.mirror.instance;
+    draw_scene(ctx, main);
+    draw_cap(ctx, draw, **plan, *mesh, *atlas, tile);
+    return gl::check_error(ctx.fn, "render::draw_curved_mirror_frame()");
+}
+
+} // namespace render

@@ -1,0 +1,49 @@
+// The curved-mirror effect (paper §4.3): a convex cap over the planar
+// mirror's rectangle, reflected patch by patch. Each of the G x G patches
+// gets the frustum plan_curved_mirror() fits to its reflected volume; the
+// scene is rendered once per patch with it (an ordinary, unmirrored view
+// from the patch origin O behind the mirror: no reflection matrix, no
+// winding flip, like frustum::mirror_rectangle) into the patch's tile of an
+// atlas texture. Then the frame: the scene without the planar mirror's
+// surface, and the cap, each fragment of patch (i, j) projecting its own
+// world position with that patch's matrix into the patch's tile. The
+// fragment is not on the patch frustum's near plane (the cap bulges in
+// front of its corners' plane by up to the patch's own sagitta): the lookup
+// follows the ray O -> fragment, which is the approximation the fitted
+// frustum makes, not the fragment's exactly reflected ray.
+#pragma once
+
+#include "render/curved_mirror.hpp"
+#include "render/pass_context.hpp"
+
+#include <frustum/matrix_pair.hpp>
+#include <frustum/result.hpp>
+#include <gl/offscreen_target.hpp>
+#include <scene/scene.hpp>
+
+#include <glm/glm.hpp>
+
+namespace render {
+
+struct CurvedDraw {
+    frustum::MatrixPair<float> camera;  // ZeroToOne, perspective
+    scene::MirrorRect mirror;           // the cap's footprint; mirror.instance is not drawn
+    CurvedMirrorOptions options;
+    glm::vec3 tint{0.92f, 0.95f, 1.0f}; // times the reflection
+    scene::Bounds bounds;               // the patch frustums' far planes lie beyond it
+};
+
+// Atlas tiles: width along a1, height along a2, each the longest on-screen
+// length of a patch edge in that direction (so a texel is never larger than
+// a screen pixel), at least 4 and at most 4096 / G texels.
+glm::ivec2 curved_tile_size(const CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
+                            int width_px, int height_px);
+
+// Draws the whole frame into `frame` (left bound). When the eye is behind
+// the footprint's plane the frame is the plain scene, with the planar
+// mirror's surface. A patch without a frustum (seen from behind, or its fit
+// failed) shows the clear colour.
+frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                         const CurvedDraw& draw);
+
+} // namespace render

@@ -1,0 +1,79 @@
+#include "render/lens_pass.hpp"
+
+#include "render/scene_pass.hpp"
+
+#include <gl/errors.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace render {
+namespace {
+
+constexpr const char* kLensOnNearPlane = "render::lens_on_near_plane()";
+
+} // namespace
+
+frustum::Result<frustum::Lens<float>> lens_on_near_plane(const frustum::MatrixPair<float>& camera,
+                                                         const std::optional<scene::LensSpot>& spot, float power) {
+    if (!(power > 0.0f) || !std::isfinite(power)) {
+        return frustum::Error{std::string(kLensOnNearPlane) + ": power must be finite and > 0, got power=" +
+                              std::to_string(power)};
+    }
+    const auto frame = frustum::near_plane_frame(camera);
+    if (!frame) {
+        return frustum::Error{std::string(kLensOnNearPlane) + ": " + frame.error()};
+    }
+    frustum::Lens<float> lens;
+    lens.power = power;
+    if (!spot) {
+        lens.radius_m = 0.25f * frame->half_height_m;
+        return lens;
+    }
+    const glm::vec3 normal = glm::cross(frame->x_axis, frame->y_axis);
+    const float near_offset = glm::dot(frame->center - frame->eye, normal);
+    // The near-plane coordinates (metres) of the ray from the eye to `p`.
+    const auto project = [&](const glm::vec3& p, glm::vec2& out) {
+        const float along = glm::dot(p - frame->eye, normal);
+        if (!(along / near_offset > 0.0f)) {
+            return false; // not in front of the eye
+        }
+        const glm::vec3 hit = frame->eye + (near_offset / along) * (p - frame->eye);
+        out = glm::vec2(glm::dot(hit - frame->center, frame->x_axis), glm::dot(hit - frame->center, frame->y_axis));
+        return true;
+    };
+    glm::vec2 rim(0.0f);
+    if (!project(spot->center, lens.center_m) || !project(spot->center + spot->radius_m * frame->x_axis, rim)) {
+        return frustum::Error{std::string(kLensOnNearPlane) + ": the lens spot is not in front of the camera"};
+    }
+    lens.radius_m = glm::length(rim - lens.center_m);
+    if (!(lens.radius_m > 0.0f)) {
+        return frustum::Error{std::string(kLensOnNearPlane) + ": the lens spot has no size, radius_m=" +
+                              std::to_string(spot->radius_m)};
+    }
+    return lens;
+}
+
+frustum::Status draw_lens_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const LensDraw& draw) {
+    auto tiles = frustum::lens_tiles(draw.camera, draw.lens, frame.width(), frame.height(), draw.grid, draw.grid);
+    if (!tiles) {
+        return frustum::Error{"render::draw_lens_frame(): " + tiles.error()};
+    }
+    const gl::Functions& fn = ctx.fn;
+    frame.bind();
+    set_frame_state(ctx);
+    fn.Enable(GL_SCISSOR_TEST);
+    for (const frustum::Tile<float>& tile : *tiles) {
+        fn.Viewport(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
+        fn.Scissor(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
+        clear_frame(ctx);
+        SceneDraw scene{tile.pair};
+        scene.skip_instance = draw.skip_instance;
+        draw_scene(ctx, scene);
+    }
+    fn.Disable(GL_SCISSOR_TEST);
+    frame.bind();
+    return gl::check_error(fn, "render::draw_lens_frame()");
+}
+
+} // namespace render

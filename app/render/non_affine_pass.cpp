@@ -1,0 +1,196 @@
+#include "render/non_affine_pass.hpp"
+
+#include "render/face_state.hpp"
+#include "render/scene_pass.hpp"
+
+#include <frustum/lens.hpp>
+#include <frustum/queries.hpp>
+#include <gl/errors.hpp>
+#include <gl/objects.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace render {
+namespace {
+
+constexpr const char* kDraw = "render::draw_non_affine_frame()";
+
+// The plane through the lines a + t up and b + t up, outward: `inside` on
+// its negative side.
+frustum::Plane<float> outward_plane(const glm::vec3& a, const glm::vec3& b, const glm::vec3& up,
+                                    const glm::vec3& inside) {
+    const glm::vec3 normal = glm::normalize(glm::cross(b - a, up));
+    const frustum::Plane<float> plane(glm::vec4(normal, -glm::dot(normal, a)));
+    return plane.distance(inside) < 0.0f ? plane : plane.flipped();
+}
+
+// A triangle range of the index buffer and how to draw it.
+struct Range {
+    GLsizei first = 0, count = 0;
+    const WorldPrimitive* primitive = nullptr;
+};
+
+void set_material(const PassContext& ctx, const NonAffineProgram& p, const WorldPrimitive& primitive) {
+    const gl::Functions& fn = ctx.fn;
+    const GpuMaterial& material = ctx.scene.material(primitive.material);
+    fn.Uniform4fv(p.base_color, 1, glm::value_ptr(material.base_color_factor));
+    const bool textured = material.texture >= 0 &&
+                          static_cast<std::size_t>(material.texture) < ctx.scene.textures().size();
+    fn.Uniform1i(p.has_texture, textured ? 1 : 0);
+    fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
+    fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
+    fn.Uniform1i(p.shading, static_cast<GLint>(primitive.has_normals ? Shading::VertexNormals : Shading::FlatNormals));
+    set_face_state(fn, material.double_sided, false, false);
+}
+
+void set_frame_uniforms(const PassContext& ctx, const NonAffineProgram& p,
+                        const frustum::NonAffineFrustum<float>& frustum) {
+    const gl::Functions& fn = ctx.fn;
+    glm::vec4 planes[6];
+    for (int i = 0; i < 6; ++i) {
+        planes[i] = frustum.plane(i).abcd;
+    }
+    fn.Uniform4fv(p.planes, 6, glm::value_ptr(planes[0]));
+    fn.Uniform1f(p.z_near, frustum::clip_z_near<float>(ctx.depth.gpu_range()));
+    fn.Uniform1f(p.z_far, frustum::clip_z_far<float>(ctx.depth.gpu_range()));
+    fn.Uniform1f(p.flat_normal_sign, 1.0f);
+    const glm::vec3 to_light = glm::normalize(ctx.lighting.to_light);
+    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
+    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
+    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
+    fn.ActiveTexture(GL_TEXTURE0);
+    fn.Uniform1i(p.base_color_texture, 0);
+}
+
+void set_vertex_layout(const gl::Functions& fn) {
+    const auto stride = static_cast<GLsizei>(sizeof(WorldVertex));
+    const auto attribute = [&](GLuint location, GLint size, std::size_t offset) {
+        fn.EnableVertexAttribArray(location);
+        fn.VertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+    };
+    attribute(kPositionLocation, 3, offsetof(WorldVertex, position));
+    attribute(kNormalLocation, 3, offsetof(WorldVertex, normal));
+    attribute(kColorLocation, 4, offsetof(WorldVertex, color));
+    attribute(kTexcoordLocation, 2, offsetof(WorldVertex, texcoord));
+}
+
+} // namespace
+
+frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const frustum::MatrixPair<float>& camera,
+                                                                        const NonAffineOptions& options,
+                                                                        frustum::DepthRange depth) {
+    constexpr const char* kWhere = "render::crossed_slits_frustum()";
+    const auto frame = frustum::near_plane_frame(camera);
+    if (!frame) {
+        return frustum::Error{std::string(kWhere) + ": " + frame.error()};
+    }
+    const auto camera_planes = frustum::planes(camera);
+    if (!camera_planes.far) {
+        return frustum::Error{std::string(kWhere) + ": needs a camera with a finite far plane"};
+    }
+    const glm::vec3 up = frame->y_axis;
+    const glm::vec3 forward = glm::normalize(glm::cross(frame->y_axis, frame->x_axis));
+    const float near_m = glm::dot(frame->center - frame->eye, forward);
+    const float far_m = std::abs(camera_planes.far->distance(frame->eye));
+    if (!(options.slit_depth_m > 0.0f && options.slit_depth_m < options.pivot_depth_m &&
+          options.pivot_depth_m < far_m)) {
+        return frustum::Error{std::string(kWhere) + ": needs 0 < slit_depth_m < pivot_depth_m < far, got slit_depth_m=" +
+                              std::to_string(options.slit_depth_m) + " pivot_depth_m=" +
+                              std::to_string(options.pivot_depth_m) + " far=" + std::to_string(far_m)};
+    }
+    // Points at a depth along the rays through the near centre and the
+    // middles of the near rectangle's left and right edges.
+    const auto along = [&](const glm::vec3& near_point, float depth_m) {
+        return frame->eye + (depth_m / near_m) * (near_point - frame->eye);
+    };
+    const glm::vec3 slit = along(frame->center, options.slit_depth_m);
+    const glm::vec3 inside = along(frame->center, options.pivot_depth_m);
+    const glm::vec3 left_pivot = along(frame->center - frame->half_width_m * frame->x_axis, options.pivot_depth_m);
+    const glm::vec3 right_pivot = along(frame->center + frame->half_width_m * frame->x_axis, options.pivot_depth_m);
+    return frustum::NonAffineFrustum<float>::from_planes(
+        outward_plane(slit, left_pivot, up, inside), outward_plane(slit, right_pivot, up, inside),
+        camera_planes.bottom.flipped(), camera_planes.top.flipped(), camera_planes.near.flipped(),
+        camera_planes.far->flipped(), inside, depth);
+}
+
+bool is_degenerate(const frustum::NonAffineFrustum<float>& frustum, const glm::vec3& p, float guard_m) {
+    const glm::vec3 d = frustum.denominators(p);
+    return !(d.x < -guard_m && d.y < -guard_m && d.z < -guard_m);
+}
+
+frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                                      const WorldGeometry& geometry,
+                                                      const frustum::NonAffineFrustum<float>& frustum,
+                                                      const NonAffineOptions& options) {
+    const WorldGeometry split = subdivide(geometry, options.max_edge_m);
+    NonAffineStats stats;
+    std::vector<WorldVertex> vertices;
+    std::vector<GLuint> indices;
+    std::vector<Range> ranges;
+    std::vector<bool> degenerate;
+    for (const WorldPrimitive& p : split.primitives) {
+        const auto base = static_cast<GLuint>(vertices.size());
+        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
+        degenerate.assign(p.vertices.size(), false);
+        if (options.cull) {
+            for (std::size_t v = 0; v < p.vertices.size(); ++v) {
+                degenerate[v] = is_degenerate(frustum, p.vertices[v].position, options.guard_m);
+            }
+        }
+        Range range{static_cast<GLsizei>(indices.size()), 0, &p};
+        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+            ++stats.triangles;
+            if (degenerate[p.indices[t]] || degenerate[p.indices[t + 1]] || degenerate[p.indices[t + 2]]) {
+                ++stats.culled;
+                continue;
+            }
+            indices.insert(indices.end(), {base + p.indices[t], base + p.indices[t + 1], base + p.indices[t + 2]});
+        }
+        range.count = static_cast<GLsizei>(indices.size()) - range.first;
+        if (range.count > 0) {
+            ranges.push_back(range);
+        }
+    }
+
+    const gl::Functions& fn = ctx.fn;
+    auto vertex_array = gl::VertexArray::create(fn);
+    auto vertex_buffer = gl::Buffer::create(fn);
+    auto index_buffer = gl::Buffer::create(fn);
+    if (!vertex_array || !vertex_buffer || !index_buffer) {
+        return frustum::Error{std::string(kDraw) + ": " + vertex_array.error() + vertex_buffer.error() +
+                              index_buffer.error()};
+    }
+    frame.bind();
+    begin_frame(ctx);
+    fn.BindVertexArray(vertex_array->id());
+    fn.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer->id());
+    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(WorldVertex)), vertices.data(),
+                  GL_STREAM_DRAW);
+    fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer->id());
+    fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
+                  GL_STREAM_DRAW);
+    set_vertex_layout(fn);
+
+    const NonAffineProgram& p = ctx.programs.non_affine;
+    fn.UseProgram(p.program.id());
+    set_frame_uniforms(ctx, p, frustum);
+    for (const Range& range : ranges) {
+        set_material(ctx, p, *range.primitive);
+        fn.DrawElements(GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
+                        reinterpret_cast<const void*>(static_cast<std::size_t>(range.first) * sizeof(GLuint)));
+    }
+    fn.BindVertexArray(0);
+    fn.BindBuffer(GL_ARRAY_BUFFER, 0);
+    fn.BindTexture(GL_TEXTURE_2D, 0);
+    restore_face_state(fn);
+    if (auto status = gl::check_error(fn, kDraw); !status) {
+        return frustum::Error{status.error()};
+    }
+    return stats;
+}
+
+} // namespace render

@@ -1,0 +1,59 @@
+// The non-affine effect (paper section 6): the scene through a frustum of six
+// planes that no 4x4 matrix represents, mapped per vertex by eq. 36
+// (shaders/non_affine.vert, frustum_non_affine_clip() in frustum.glsl).
+//
+// The frustum is a crossed-slits camera built from the main camera: its
+// top, bottom, near and far planes, and left and right planes each turned
+// about its own vertical axis so that they meet in a vertical line (the
+// "slit") slit_depth_m in front of the eye instead of in the eye. Then
+// horizontal positions are a perspective from the slit, vertical ones from
+// the eye: no single centre of projection, so no matrix (eq. 9 fails).
+//
+// Remedy for the zero denominators (docs/non-affine.md): the triangles are
+// split to at most max_edge_m per edge (eq. 36 bends straight edges; small
+// triangles follow the curve), then every triangle with a vertex whose
+// denominators are not all < -guard_m is dropped on the CPU.
+#pragma once
+
+#include "render/pass_context.hpp"
+#include "render/world_geometry.hpp"
+
+#include <frustum/matrix_pair.hpp>
+#include <frustum/non_affine.hpp>
+#include <frustum/result.hpp>
+#include <gl/offscreen_target.hpp>
+
+namespace render {
+
+struct NonAffineOptions {
+    float slit_depth_m = 2.6f;  // left and right planes meet this far in front of the eye
+    float pivot_depth_m = 8.0f; // ... and still cut the camera's side planes at this depth
+    float max_edge_m = 0.25f;   // subdivision target in world space; 0 = none
+    bool cull = true;           // false: the naive eq. 36 (for comparison only)
+    float guard_m = 0.01f;      // a vertex is degenerate when a denominator is >= -guard_m
+};
+
+// The crossed-slits frustum of `camera` (perspective, finite far plane):
+// outward unit planes as NonAffineFrustum wants them. Errors name the
+// values: 0 < slit_depth_m < pivot_depth_m < the camera's far distance.
+frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const frustum::MatrixPair<float>& camera,
+                                                                        const NonAffineOptions& options,
+                                                                        frustum::DepthRange depth);
+
+struct NonAffineStats {
+    int triangles = 0; // after subdivision
+    int culled = 0;    // of them, dropped for a degenerate vertex
+};
+
+// True when some denominator of eq. 36 at `p` is >= -guard_m.
+bool is_degenerate(const frustum::NonAffineFrustum<float>& frustum, const glm::vec3& p, float guard_m);
+
+// Draws the whole frame into `frame` (left bound). The frustum's planes are
+// used; its depth range is not: s = 0..1 goes to the GPU's depth range
+// (ctx.depth). `geometry` holds the scene's original triangles.
+frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                                      const WorldGeometry& geometry,
+                                                      const frustum::NonAffineFrustum<float>& frustum,
+                                                      const NonAffineOptions& options);
+
+} // namespace render

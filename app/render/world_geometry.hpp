@@ -1,0 +1,61 @@
+// The scene's triangles flattened to world space on the CPU, for the
+// non-affine effect (eq. 36 is not a matrix, so the GPU cannot take a model
+// matrix through it for free and the CPU must see every vertex to cull) and
+// for its ray-cast reference. Points and lines are left out.
+#pragma once
+
+#include <scene/scene.hpp>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace render {
+
+struct WorldVertex {
+    glm::vec3 position{0.0f}; // world, metres
+    glm::vec3 normal{0.0f, 0.0f, 1.0f}; // world, not normalized (the shader normalizes)
+    glm::vec4 color{1.0f};    // COLOR_0, linear; white when absent
+    glm::vec2 texcoord{0.0f};
+};
+
+// One primitive of one instance: a triangle list, counter-clockwise from the
+// front (the winding of a mirroring instance transform is undone here).
+struct WorldPrimitive {
+    std::vector<WorldVertex> vertices;
+    std::vector<std::uint32_t> indices; // 3 per triangle
+    int instance = -1;
+    int material = -1; // into scene.materials (GpuScene::material()), -1 = default
+    glm::vec4 base_color_factor{1.0f};
+    bool double_sided = false;
+    bool has_normals = false;
+    bool textured = false;
+};
+
+struct WorldGeometry {
+    std::vector<WorldPrimitive> primitives;
+
+    int triangle_count() const;
+
+    // Every triangle primitive (lists, strips and fans) of every instance,
+    // placed by the instances' world transforms.
+    static WorldGeometry from_scene(const scene::Scene& scene);
+
+    // The same in each mesh's own space (instance transforms not applied),
+    // to be placed later by the instances as they are then (a moved mirror).
+    static WorldGeometry in_object_space(const scene::Scene& scene);
+
+    // Object-space geometry moved to world space by instances[p.instance].world
+    // for each primitive p; `instances` must be the scene's, possibly moved.
+    WorldGeometry placed(const std::vector<scene::Instance>& instances) const;
+};
+
+// Each primitive's triangles split into n x n smaller ones (a uniform
+// barycentric grid), n = ceil(longest world edge of the primitive /
+// max_edge_m), at most kMaxSubdivision. One n per primitive keeps shared
+// edges split alike, so the surface stays watertight. max_edge_m <= 0: a copy.
+inline constexpr int kMaxSubdivision = 64;
+WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m);
+
+} // namespace render

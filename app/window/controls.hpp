@@ -1,0 +1,82 @@
+// Keyboard and mouse -> what the window shows. Pure: events come in as
+// gl::InputEvent values, so tests drive it without a window.
+#pragma once
+
+#include "window/mirror_pose.hpp"
+#include "window/orbit_camera.hpp"
+
+#include <frustum/matrix_pair.hpp>
+#include <gl/window_input.hpp>
+#include <render/effect.hpp>
+#include <scene/scene.hpp>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace window {
+
+inline constexpr int kMaxTiles = 16; // per direction
+// Lens power (paper eq. 34's p) stays within [kMinLensPower, kMaxLensPower],
+// the range `frustum-demo render --lens-power` accepts up to.
+inline constexpr float kMinLensPower = 0.25f;
+inline constexpr float kMaxLensPower = 8.0f;
+
+// What the window shows; Controls::apply() changes it.
+struct ViewerState {
+    render::Effect effect = render::Effect::Plain;
+    // Unset: the scene's main camera pair exactly (no camera input yet, or
+    // after R). Set on the first camera input, starting where that camera is.
+    std::optional<OrbitCamera> orbit;
+    MirrorPose mirror;
+    render::MirrorMethod mirror_method = render::MirrorMethod::Oblique;
+    int tile_columns = 3;
+    int tile_rows = 2;
+    float lens_power = 2.0f; // lens effect; > 1 magnifies
+    bool show_help = false;
+    bool show_inset = false; // the frustum view in a corner
+    bool quit = false;
+};
+
+// What the controls need to know about the scene.
+struct ControlScene {
+    scene::Bounds bounds;
+    // Longer edge of the mirror; 0 = no mirror (the mirror keys do nothing).
+    float mirror_size_m = 0.0f;
+};
+
+ControlScene control_scene(const scene::Scene& scene);
+
+class Controls {
+public:
+    explicit Controls(const ControlScene& scene) : scene_(scene) {}
+
+    // `main_camera`: the scene's camera this frame, where orbiting starts.
+    void apply(const gl::InputEvent& event, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
+
+private:
+    void key(const gl::KeyPressed& press, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
+    bool camera_key(const gl::KeyPressed& press, OrbitCamera& orbit) const;
+    bool mirror_key(const gl::KeyPressed& press, MirrorPose& pose) const;
+    OrbitCamera& start_orbit(const frustum::MatrixPair<float>& main_camera, ViewerState& state) const;
+    void drag(const glm::dvec2& delta, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
+
+    ControlScene scene_;
+    bool left_down_ = false;
+    bool pan_down_ = false; // right or middle button, or Shift + left
+    std::optional<glm::dvec2> cursor_;
+};
+
+// The tile grid after '+' (step 1) or '-' (step -1): a column is added
+// when there are no more columns than rows, else a row (3x2 -> 3x3 -> 4x3),
+// and '-' undoes it; each count stays within 1..kMaxTiles.
+std::pair<int, int> next_tiles(int columns, int rows, int step);
+
+// The lens power after ']' (step 1: times 1.25) or '[' (step -1: divided by
+// 1.25), kept within [kMinLensPower, kMaxLensPower].
+float next_lens_power(float power, int step);
+
+} // namespace window

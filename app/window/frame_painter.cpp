@@ -1,0 +1,73 @@
+#include "window/frame_painter.hpp"
+
+#include <gl/window_framebuffer.hpp>
+
+#include <utility>
+
+namespace window {
+namespace {
+
+constexpr int kInsetBorderPx = 2;
+constexpr float kInsetBorderColor[4] = {0.95f, 0.95f, 0.95f, 1.0f};
+
+} // namespace
+
+frustum::Result<FramePainter> FramePainter::create(const gl::Functions& fn) {
+    auto text = TextOverlay::create(fn);
+    if (!text) {
+        return frustum::Error{text.error()};
+    }
+    return FramePainter(fn, std::move(*text));
+}
+
+frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl::OffscreenTarget>& slot,
+                                                                int width_px, int height_px) {
+    if (!slot || slot->width() != width_px || slot->height() != height_px) {
+        slot.reset(); // free the old one first
+        auto target = gl::OffscreenTarget::create(*fn_, {width_px, height_px});
+        if (!target) {
+            return frustum::Error{"window::FramePainter::paint(): " + target.error()};
+        }
+        slot = std::move(*target);
+    }
+    return &*slot;
+}
+
+frustum::Status FramePainter::paint(const render::Renderer& renderer, const Frame& frame, int width_px,
+                                    int height_px) {
+    auto main = sized(frame_target_, width_px, height_px);
+    if (!main) {
+        return frustum::Error{main.error()};
+    }
+    if (auto status = renderer.render_into(frame.effect, frame.cameras, frame.options, **main); !status) {
+        return status;
+    }
+    if (auto status = gl::blit_to_window(*fn_, **main, {0, 0, width_px, height_px}); !status) {
+        return status;
+    }
+    if (const auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
+        auto inset = sized(inset_target_, rect->width, rect->height);
+        if (!inset) {
+            return frustum::Error{inset.error()};
+        }
+        if (auto status = renderer.render_into(inset_effect(frame.effect), frame.cameras, frame.options, **inset);
+            !status) {
+            return status;
+        }
+        gl::clear_window_rect(*fn_, {rect->x - kInsetBorderPx, rect->y - kInsetBorderPx,
+                                     rect->width + 2 * kInsetBorderPx, rect->height + 2 * kInsetBorderPx},
+                              kInsetBorderColor);
+        if (auto status = gl::blit_to_window(*fn_, **inset, *rect); !status) {
+            return status;
+        }
+    }
+    if (!frame.text.empty()) {
+        fn_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+        fn_->Viewport(0, 0, width_px, height_px);
+        return text_.draw(renderer.programs().line, renderer.gpu_depth_range(frame.options.depth), frame.text,
+                          width_px, height_px);
+    }
+    return {};
+}
+
+} // namespace window

@@ -1,0 +1,40 @@
+// Draws a window::Frame into the window's framebuffer 0 with the same
+// renderer as `frustum-demo render`: the effect is rendered into an
+// offscreen target of the framebuffer's size (render::Renderer::render_into)
+// and blitted; the inset likewise at its own size into a corner; then the
+// help panel on top.
+#pragma once
+
+#include "window/frame.hpp"
+#include "window/text_overlay.hpp"
+
+#include <frustum/result.hpp>
+#include <gl/functions.hpp>
+#include <gl/offscreen_target.hpp>
+#include <render/renderer.hpp>
+
+#include <optional>
+
+namespace window {
+
+class FramePainter {
+public:
+    static frustum::Result<FramePainter> create(const gl::Functions& fn);
+
+    // The targets are kept between frames and made anew when the size changes.
+    frustum::Status paint(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
+
+private:
+    FramePainter(const gl::Functions& fn, TextOverlay text) : fn_(&fn), text_(std::move(text)) {}
+
+    // `slot` holding a width x height target, made anew when its size differs.
+    frustum::Result<const gl::OffscreenTarget*> sized(std::optional<gl::OffscreenTarget>& slot, int width_px,
+                                                      int height_px);
+
+    const gl::Functions* fn_;
+    TextOverlay text_;
+    std::optional<gl::OffscreenTarget> frame_target_;
+    std::optional<gl::OffscreenTarget> inset_target_;
+};
+
+} // namespace window

@@ -1,0 +1,59 @@
+#include "window/key_help.hpp"
+
+#include <cstdio>
+#include <iterator>
+
+namespace window {
+namespace {
+
+// "2", "2.5", "1.28": up to three significant digits.
+std::string power_text(float power) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.3g", static_cast<double>(power));
+    return text;
+}
+
+} // namespace
+
+std::vector<KeyHelp> key_help() {
+    const std::size_t count = std::size(render::kAllEffects);
+    const std::string effects = "1.." + std::to_string(count);
+    std::string names;
+    for (std::size_t i = 0; i < count; ++i) {
+        names += (i ? ", " : "") + std::to_string(i + 1) + " " + std::string(render::to_string(render::kAllEffects[i]));
+    }
+    return {
+        {effects, "effect: " + names},
+        {"left drag, A D W S", "orbit the camera around its target"},
+        {"right drag, Shift+A D W S", "pan (Shift + left drag too)"},
+        {"wheel, Q E", "zoom in / out"},
+        {"R", "camera back to the scene's camera"},
+        {"Left Right", "turn the mirror about the vertical"},
+        {"Up Down", "tilt the mirror"},
+        {"Shift+Left Right", "slide the mirror sideways"},
+        {"Shift+Up Down", "move the mirror forward / back"},
+        {"M", "mirror back to where the scene put it"},
+        {"O", "mirror camera: oblique, rectangle, reflect_only"},
+        {"+ -", "more / fewer tiles"},
+        {"[ ]", "lens power down / up (lens effect)"},
+        {"F", "frustum view inset on / off"},
+        {"H", "this help on / off"},
+        {"Esc", "quit"},
+    };
+}
+
+std::vector<std::string> help_lines(const ViewerState& state) {
+    std::vector<std::string> lines;
+    lines.push_back("effect " + std::string(render::to_string(state.effect)) + "   tiles " +
+                    std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows) + "   mirror camera " +
+                    std::string(render::to_string(state.mirror_method)) + "   lens power " +
+                    power_text(state.lens_power) +
+                    (state.orbit ? "   camera: orbit" : "   camera: scene"));
+    lines.emplace_back();
+    for (const KeyHelp& entry : key_help()) {
+        lines.push_back(entry.keys + "\t" + entry.action);
+    }
+    return lines;
+}
+
+} // namespace window

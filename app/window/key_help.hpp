@@ -1,0 +1,26 @@
+// The key list: the help overlay's text (H) and the table in
+// docs/window.md (a test keeps the two in step). Pure.
+#pragma once
+
+#include "window/controls.hpp"
+
+#include <string>
+#include <vector>
+
+namespace window {
+
+// One binding: its keys and what they do.
+struct KeyHelp {
+    std::string keys;
+    std::string action;
+};
+
+// Every binding, in the order shown; the effect keys list render::kAllEffects.
+std::vector<KeyHelp> key_help();
+
+// The help overlay: a status line (effect, tiles, mirror camera, lens
+// power, camera), a blank line, then one "keys\taction" line per key_help()
+// entry (the tab starts the second column).
+std::vector<std::string> help_lines(const ViewerState& state);
+
+} // namespace window

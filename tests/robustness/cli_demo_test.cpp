@@ -1,0 +1,192 @@
+// frustum-demo render as a built binary: usage errors exit 2 before any
+// work (the output folder is not even created), runtime failures exit 1
+// with the reason; stdout (the paths written) stays empty and no file is
+// left behind: no PNG, no "*.tmp*" from an interrupted write, no probe.
+#ifdef FRUSTUM_DEMO_EXE
+#include "support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <signal.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class Out { NotCreated, NoFiles };
+
+struct DemoCase {
+    const char* input;
+    std::function<std::vector<std::string>(const rob::TempDir&)> args; // may create files in the folder
+    int exit_status;
+    std::vector<std::string> phrases; // on stderr
+    Out out;
+};
+
+// "render" + the given options, with --out <tmp>/out appended.
+std::function<std::vector<std::string>(const rob::TempDir&)> render(std::vector<std::string> options) {
+    return [options](const rob::TempDir& dir) {
+        std::vector<std::string> args{"render"};
+        args.insert(args.end(), options.begin(), options.end());
+        args.insert(args.end(), {"--out", (dir / "out").string()});
+        return args;
+    };
+}
+
+// A scene file in the temp folder with the given text.
+std::function<std::vector<std::string>(const rob::TempDir&)> scene_text(std::string text) {
+    return [text](const rob::TempDir& dir) {
+        rob::write_file(dir / "scene.gltf", text);
+        return render({"--scene", (dir / "scene.gltf").string()})(dir);
+    };
+}
+
+const std::string kTriangle = std::string(FRUSTUM_SAMPLES_DIR) + "/Triangle/Triangle.gltf";
+
+const std::vector<DemoCase>& demo_cases() {
+    static const std::vector<DemoCase> cases = {
+        {"no command", [](const rob::TempDir&) { return std::vector<std::string>{}; }, 2,
+         {"frustum-demo: error: expected a command: render"}, Out::NotCreated},
+        {"unknown command", [](const rob::TempDir& d) { return std::vector<std::string>{"draw", "--out", (d / "out").string()}; },
+         2, {"unknown command 'draw'"}, Out::NotCreated},
+        {"unknown option", render({"--colour", "red"}), 2, {"unknown option '--colour'"}, Out::NotCreated},
+        {"--size 0x10", render({"--size", "0x10"}), 2, {"--size must be WxH with 1..8192 each, got '0x10'"}, Out::NotCreated},
+        {"--size 8193x1", render({"--size", "8193x1"}), 2, {"--size must be WxH", "'8193x1'"}, Out::NotCreated},
+        {"--size -5x5", render({"--size", "-5x5"}), 2, {"--size must be WxH", "'-5x5'"}, Out::NotCreated},
+        {"--tiles 0x2", render({"--tiles", "0x2"}), 2, {"--tiles must be NxM", "'0x2'"}, Out::NotCreated},
+        {"more tiles than pixels", render({"--size", "64x36", "--tiles", "65x1"}), 2,
+         {"--tiles 65x1 needs at least one pixel per tile"}, Out::NotCreated},
+        {"unknown effect", render({"--effect", "sparkle"}), 2, {"unknown effect 'sparkle'"}, Out::NotCreated},
+        {"unknown backend", render({"--backend", "vulkan"}), 2, {"unknown backend 'vulkan'"}, Out::NotCreated},
+        {"unknown depth range", render({"--depth", "reversed"}), 2, {"unknown depth range 'reversed'"}, Out::NotCreated},
+        {"unknown mirror method", render({"--mirror", "curved"}), 2, {"unknown mirror method 'curved'"}, Out::NotCreated},
+        {"empty --out", [](const rob::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
+         {"--out needs a folder"}, Out::NotCreated},
+        {"--scene without a value", [](const rob::TempDir& d) {
+             return std::vector<std::string>{"render", "--out", (d / "out").string(), "--scene"};
+         }, 2, {"--scene needs a value"}, Out::NotCreated},
+        {"unknown camera", render({"--scene", kTriangle, "--camera", "nosuch"}), 2, {"no camera 'nosuch'"}, Out::NoFiles},
+        {"missing scene", [](const rob::TempDir& d) { return render({"--scene", (d / "none.gltf").string()})(d); }, 1,
+         {"frustum-demo: error: scene::load_gltf(): ", "none.gltf\" does not exist"}, Out::NoFiles},
+        {"scene that is not glTF", scene_text("GIF89a"), 1, {"not a glTF file"}, Out::NoFiles},
+        {"scene with uri \"..\"", scene_text(R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "../x.bin", "byteLength": 4}]})"),
+         1, {"buffer 0 uri \"../x.bin\"", "outside the model folder"}, Out::NoFiles},
+        {"--out below a regular file", [](const rob::TempDir& d) {
+             rob::write_file(d / "file", "x");
+             return std::vector<std::string>{"render", "--out", (d / "file" / "out").string()};
+         }, 1, {"cannot create output folder", "Not a directory"}, Out::NotCreated},
+        {"--out read-only", [](const rob::TempDir& d) {
+             // root ignores permission bits: /sys refuses new files even to root.
+             std::string ro = "/sys";
+             if (::geteuid() != 0) {
+                 fs::create_directory(d / "ro");
+                 fs::permissions(d / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+                 ro = (d / "ro").string();
+             }
+             return std::vector<std::string>{"render", "--effect", "plain", "--out", ro};
+         }, 1, {"cannot write to output folder", "Permission denied"}, Out::NotCreated},
+    };
+    return cases;
+}
+
+// Files below `dir` whose name contains ".tmp" or ends in ".png".
+std::vector<std::string> leftovers(const fs::path& dir) {
+    std::vector<std::string> found;
+    std::error_code error;
+    for (const auto& entry : fs::recursive_directory_iterator(dir, error)) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".tmp") != std::string::npos || name.find(".png") != std::string::npos ||
+            name.find("probe") != std::string::npos) {
+            found.push_back(entry.path().string());
+        }
+    }
+    return found;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+// True (after a MESSAGE) when the run failed for want of a GL context.
+bool no_gl(const rob::Outcome& r) {
+    if (r.err.find("context") != std::string::npos && r.err.find("write_png") == std::string::npos) {
+        MESSAGE("no GL context, case skipped: " << r.err);
+        return true;
+    }
+    return false;
+}
+
+} // namespace
+
+TEST_SUITE("robustness") {
+
+TEST_CASE("frustum-demo: usage errors exit 2, runtime failures exit 1, nothing written") {
+    CHECK(demo_cases().size() >= 18);
+    for (const DemoCase& c : demo_cases()) {
+        const std::string input = c.input;
+        CAPTURE(input);
+        rob::TempDir dir;
+        rob::Launch launch;
+        launch.args = c.args(dir);
+        launch.cwd = dir.path().string(); // the default --out "out" would land here
+        const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+        CAPTURE(r.err);
+        CHECK(r.signal == 0);
+        CHECK(r.exit_status == c.exit_status);
+        CHECK_MESSAGE(r.out.empty(), "stdout must be empty, got: ", r.out.substr(0, 200));
+        CHECK(r.err.rfind("frustum-demo: error: ", 0) == 0);
+        const auto missing = rob::missing_phrase(r.err, c.phrases);
+        CHECK_MESSAGE(!missing, "missing phrase: ", missing.value_or(""));
+        if (c.out == Out::NotCreated) {
+            CHECK_FALSE(fs::exists(dir / "out"));
+        } else {
+            CHECK(rob::list_dir(dir / "out").empty());
+        }
+        CHECK_MESSAGE(leftovers(dir.path()).empty(), "left behind: ", joined(leftovers(dir.path())));
+    }
+}
+
+TEST_CASE("frustum-demo: a write that fails midway (file size limit) leaves no PNG and no temp file") {
+    rob::TempDir dir;
+    rob::Launch launch;
+    launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
+    launch.file_size_limit_bytes = 4096; // the PNG is larger: write() fails with EFBIG
+    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    CAPTURE(r.err);
+    if (no_gl(r)) return;
+    CHECK(r.signal == 0);
+    CHECK(r.exit_status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("frustum-demo: error: image::write_png(): cannot write '") == 0);
+    CHECK(r.err.find("File too large") != std::string::npos);
+    CHECK_MESSAGE(leftovers(dir.path()).empty(), "left behind: ", joined(leftovers(dir.path())));
+}
+
+TEST_CASE("frustum-demo: killed in the middle of a write, no partial PNG under the final name") {
+    rob::TempDir dir;
+    rob::Launch launch;
+    launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
+    launch.file_size_limit_bytes = 4096;
+    launch.ignore_sigxfsz = false; // SIGXFSZ kills the process inside write()
+    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    CAPTURE(r.err);
+    if (no_gl(r)) return;
+    CHECK(r.signal == SIGXFSZ);
+    CHECK_FALSE(fs::exists(dir / "out" / "plain.png"));
+    // What a killed process leaves: at most its own temp file, never a PNG.
+    for (const std::string& name : rob::list_dir(dir / "out")) {
+        CAPTURE(name);
+        CHECK(name.rfind("plain.png.tmp-", 0) == 0);
+    }
+}
+
+} // TEST_SUITE
+#endif

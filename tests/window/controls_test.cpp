@@ -1,0 +1,199 @@
+// Input events -> ViewerState, driven without a window.
+#include "showcase.hpp"
+
+#include <doctest/doctest.h>
+
+#include <window/controls.hpp>
+#include <window/frame.hpp>
+#include <window/key_help.hpp>
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace {
+
+gl::KeyPressed character(char c, bool shift = false) {
+    gl::KeyPressed press;
+    press.key = gl::Key::Character;
+    press.character = c;
+    press.mods.shift = shift;
+    return press;
+}
+
+gl::KeyPressed key(gl::Key k, bool shift = false) {
+    gl::KeyPressed press;
+    press.key = k;
+    press.mods.shift = shift;
+    return press;
+}
+
+struct Rig {
+    render::Cameras cameras = window_test::showcase_cameras();
+    window::Controls controls{window::control_scene(window_test::showcase())};
+    window::ViewerState state;
+
+    void send(const gl::InputEvent& event) { controls.apply(event, cameras.main.pair, state); }
+};
+
+} // namespace
+
+TEST_SUITE("window") {
+
+TEST_CASE("number keys pick the effects of render::kAllEffects in order") {
+    Rig rig;
+    for (std::size_t i = 0; i < std::size(render::kAllEffects) && i < 9; ++i) {
+        rig.send(character(static_cast<char>('1' + i)));
+        CHECK(rig.state.effect == render::kAllEffects[i]);
+    }
+    rig.send(character('1'));
+    rig.send(character(static_cast<char>('1' + std::size(render::kAllEffects)))); // one past: ignored
+    CHECK(rig.state.effect == render::Effect::Plain);
+}
+
+TEST_CASE("toggles and Escape") {
+    Rig rig;
+    rig.send(character('H'));
+    CHECK(rig.state.show_help);
+    gl::KeyPressed held = character('H');
+    held.repeat = true;
+    rig.send(held); // a held key does not flicker
+    CHECK(rig.state.show_help);
+    rig.send(character('H'));
+    CHECK_FALSE(rig.state.show_help);
+    rig.send(character('F'));
+    CHECK(rig.state.show_inset);
+    rig.send(character('O'));
+    CHECK(rig.state.mirror_method == render::MirrorMethod::Rectangle);
+    rig.send(character('O'));
+    rig.send(character('O'));
+    CHECK(rig.state.mirror_method == render::MirrorMethod::Oblique);
+    CHECK_FALSE(rig.state.quit);
+    rig.send(key(gl::Key::Escape));
+    CHECK(rig.state.quit);
+}
+
+TEST_CASE("the camera stays the scene's until the first camera input, and R brings it back") {
+    Rig rig;
+    rig.send(gl::CursorMoved{100.0, 100.0});
+    rig.send(gl::CursorMoved{150.0, 100.0}); // moving without a button: no orbit
+    rig.send(character('H'));
+    CHECK_FALSE(rig.state.orbit);
+
+    rig.send(character('D'));
+    REQUIRE(rig.state.orbit);
+    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, window_test::showcase().world_bounds);
+    CHECK(rig.state.orbit->yaw_rad == doctest::Approx(start.yaw_rad + 0.0872664626f));
+    rig.send(character('R'));
+    CHECK_FALSE(rig.state.orbit);
+}
+
+TEST_CASE("left drag orbits, right drag and Shift + left drag pan, the wheel zooms") {
+    Rig rig;
+    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, window_test::showcase().world_bounds);
+    rig.send(gl::CursorMoved{10.0, 10.0});
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Left, true, {}});
+    rig.send(gl::CursorMoved{20.0, 10.0});
+    REQUIRE(rig.state.orbit);
+    CHECK(rig.state.orbit->yaw_rad < start.yaw_rad); // drag right: the eye goes left
+    CHECK(rig.state.orbit->target == start.target);
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Left, false, {}});
+
+    const window::OrbitCamera before_pan = *rig.state.orbit;
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Right, true, {}});
+    rig.send(gl::CursorMoved{30.0, 10.0});
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Right, false, {}});
+    CHECK(rig.state.orbit->yaw_rad == before_pan.yaw_rad);
+    CHECK(rig.state.orbit->target != before_pan.target);
+
+    const glm::vec3 target = rig.state.orbit->target;
+    gl::Modifiers shift;
+    shift.shift = true;
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Left, true, shift});
+    rig.send(gl::CursorMoved{30.0, 40.0});
+    CHECK(rig.state.orbit->target.y > target.y); // drag down: the scene follows the cursor, the camera goes up
+    rig.send(gl::MouseButtonChanged{gl::MouseButton::Left, false, shift});
+
+    const float distance = rig.state.orbit->distance_m;
+    rig.send(gl::Scrolled{0.0, 2.0});
+    CHECK(rig.state.orbit->distance_m == doctest::Approx(distance * 0.81f));
+}
+
+TEST_CASE("arrows turn, tilt, slide and push the mirror; M puts it back") {
+    Rig rig;
+    rig.send(key(gl::Key::Left));
+    rig.send(key(gl::Key::Up));
+    CHECK(rig.state.mirror.turn_rad == doctest::Approx(0.0872664626f));
+    CHECK(rig.state.mirror.tilt_rad == doctest::Approx(-0.0872664626f));
+    rig.send(key(gl::Key::Right, true));
+    rig.send(key(gl::Key::Down, true));
+    // 5% of the showcase mirror's longer edge (3 m).
+    CHECK(rig.state.mirror.slide_m == doctest::Approx(0.15f));
+    CHECK(rig.state.mirror.push_m == doctest::Approx(-0.15f));
+    CHECK_FALSE(rig.state.orbit); // the camera did not move
+    rig.send(character('M'));
+    CHECK(rig.state.mirror == window::MirrorPose{});
+}
+
+TEST_CASE("without a mirror the arrows do nothing") {
+    window::Controls controls{window::ControlScene{}};
+    window::ViewerState state;
+    controls.apply(key(gl::Key::Left), window_test::showcase_cameras().main.pair, state);
+    CHECK(state.mirror == window::MirrorPose{});
+}
+
+TEST_CASE("+ and - grow and shrink the tile grid within 1..16") {
+    CHECK(window::next_tiles(3, 2, 1) == std::pair<int, int>(3, 3));
+    CHECK(window::next_tiles(3, 3, 1) == std::pair<int, int>(4, 3));
+    CHECK(window::next_tiles(4, 3, -1) == std::pair<int, int>(3, 3));
+    CHECK(window::next_tiles(3, 3, -1) == std::pair<int, int>(3, 2));
+    CHECK(window::next_tiles(1, 1, -1) == std::pair<int, int>(1, 1));
+    CHECK(window::next_tiles(16, 16, 1) == std::pair<int, int>(16, 16));
+    Rig rig;
+    rig.send(character('=', true)); // '+' on a US keyboard
+    CHECK(rig.state.tile_rows == 3);
+    rig.send(character('+')); // keypad
+    CHECK(rig.state.tile_columns == 4);
+    rig.send(character('-'));
+    rig.send(character('-'));
+    CHECK(rig.state.tile_columns == 3);
+    CHECK(rig.state.tile_rows == 2);
+}
+
+TEST_CASE("[ and ] change the lens power by 1.25 within [0.25, 8]") {
+    Rig rig;
+    rig.send(character(']'));
+    CHECK(rig.state.lens_power == doctest::Approx(2.5f));
+    rig.send(character('['));
+    rig.send(character('['));
+    CHECK(rig.state.lens_power == doctest::Approx(1.6f));
+    CHECK(window::next_lens_power(7.0f, 1) == doctest::Approx(window::kMaxLensPower));
+    CHECK(window::next_lens_power(0.3f, -1) == doctest::Approx(window::kMinLensPower));
+    const auto frame = window::make_frame(rig.state, rig.cameras, {}, scene::Bounds{}, 256, 144);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    CHECK(frame->options.lens_power == doctest::Approx(1.6f));
+}
+
+TEST_CASE("the help lists every effect, and docs/window.md lists every key") {
+    const std::vector<std::string> lines = window::help_lines(window::ViewerState{});
+    std::string all;
+    for (const std::string& line : lines) {
+        all += line + "\n";
+    }
+    for (render::Effect effect : render::kAllEffects) {
+        CHECK(all.find(std::string(render::to_string(effect))) != std::string::npos);
+    }
+    std::ifstream file(std::string(FRUSTUM_SOURCE_DIR) + "/docs/window.md");
+    REQUIRE(file.good());
+    std::stringstream docs;
+    docs << file.rdbuf();
+    for (const window::KeyHelp& entry : window::key_help()) {
+        if (entry.keys.rfind("1..", 0) == 0) {
+            continue; // the effect count changes as effects are added
+        }
+        CAPTURE(entry.keys);
+        CHECK(docs.str().find("| " + entry.keys + " | " + entry.action + " |") != std::string::npos);
+    }
+}
+
+} // TEST_SUITE

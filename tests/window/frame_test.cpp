@@ -1,0 +1,86 @@
+// One frame as data: the untouched camera is the scene's pair exactly, tile
+// counts are capped, the inset's place; window_cameras keeps the aspect.
+#include "showcase.hpp"
+
+#include <doctest/doctest.h>
+
+#include <window/frame.hpp>
+#include <window/window_cameras.hpp>
+
+#include <frustum/queries.hpp>
+
+namespace {
+
+bool same(const frustum::MatrixPair<float>& a, const frustum::MatrixPair<float>& b) {
+    return a.matrix() == b.matrix() && a.inverse() == b.inverse() && a.depth() == b.depth();
+}
+
+} // namespace
+
+TEST_SUITE("window") {
+
+TEST_CASE("with no camera input the frame uses the scene's main camera pair exactly") {
+    const scene::Scene& scene = window_test::showcase();
+    const render::Cameras cameras = window_test::showcase_cameras();
+    window::ViewerState state;
+    const auto frame = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    CHECK(same(frame->cameras.main.pair, cameras.main.pair));
+    CHECK(same(frame->cameras.overview.pair, cameras.overview.pair));
+    CHECK(frame->text.empty());
+
+    state.orbit = window::orbit_from_pair(cameras.main.pair, scene.world_bounds);
+    state.show_help = true;
+    const auto orbiting = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
+    REQUIRE_MESSAGE(orbiting.ok(), orbiting.error());
+    CHECK(orbiting->cameras.main.name == "orbit");
+    CHECK_FALSE(orbiting->text.empty());
+}
+
+TEST_CASE("tile counts are capped at one pixel per tile") {
+    window::ViewerState state;
+    state.tile_columns = 16;
+    state.tile_rows = 16;
+    const auto frame = window::make_frame(state, window_test::showcase_cameras(), {}, scene::Bounds{}, 10, 4);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    CHECK(frame->options.tile_columns == 10);
+    CHECK(frame->options.tile_rows == 4);
+}
+
+TEST_CASE("the inset: a third of the width, top-right, the framebuffer's aspect") {
+    const auto rect = window::inset_rect(960, 540);
+    REQUIRE(rect);
+    CHECK(rect->width == 320);
+    CHECK(rect->height == 180);
+    CHECK(rect->x + rect->width == 960 - 8);
+    CHECK(rect->y + rect->height == 540 - 8);
+    CHECK_FALSE(window::inset_rect(95, 540));
+    CHECK_FALSE(window::inset_rect(960, 63));
+    CHECK(window::inset_effect(render::Effect::Plain) == render::Effect::Frustum);
+    CHECK(window::inset_effect(render::Effect::Frustum) == render::Effect::Plain);
+}
+
+TEST_CASE("window_cameras equals make_cameras at the camera's aspect and refits it otherwise") {
+    const scene::Scene& scene = window_test::showcase();
+    const int index = window_test::showcase_main_index();
+    const auto at_16_9 = window::window_cameras(scene, index, 256, 144);
+    REQUIRE_MESSAGE(at_16_9.ok(), at_16_9.error());
+    const render::Cameras reference = window_test::showcase_cameras(256, 144);
+    CHECK(same(at_16_9->main.pair, reference.main.pair));
+    CHECK(same(at_16_9->overview.pair, reference.overview.pair));
+
+    // A square window: the main camera's 16:9 gives way, so a square in the
+    // picture stays square: |m00| == |m11| for a symmetric perspective
+    // (the view is rigid, so compare the scaled rows' lengths).
+    const auto square = window::window_cameras(scene, index, 300, 300);
+    REQUIRE_MESSAGE(square.ok(), square.error());
+    for (const render::NamedCamera* camera : {&square->main, &square->overview}) {
+        const glm::mat4& m = camera->pair.matrix();
+        const float row0 = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));
+        const float row1 = glm::length(glm::vec3(m[0][1], m[1][1], m[2][1]));
+        CAPTURE(camera->name);
+        CHECK(row0 == doctest::Approx(row1).epsilon(1e-4));
+    }
+}
+
+} // TEST_SUITE

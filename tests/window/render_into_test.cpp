@@ -1,0 +1,117 @@
+// Renderer::render_into (what the window draws with) and move_mirror on an
+// offscreen context; skipped with the backend's error when there is none.
+#include "showcase.hpp"
+
+#include <doctest/doctest.h>
+
+#include <gl/context.hpp>
+#include <gl/functions.hpp>
+#include <gl/offscreen_target.hpp>
+#include <image/compare.hpp>
+#include <render/renderer.hpp>
+#include <window/mirror_pose.hpp>
+
+#include <memory>
+
+namespace {
+
+// Members die in reverse: renderer, table, context.
+struct Rig {
+    std::unique_ptr<gl::Context> context;
+    std::unique_ptr<gl::Functions> fn;
+    std::optional<render::Renderer> renderer;
+};
+
+std::unique_ptr<Rig> make_rig() {
+    auto context = gl::create_offscreen_context_with_fallback({});
+    if (!context) {
+        MESSAGE("skipping: " << context.error());
+        return nullptr;
+    }
+    auto rig = std::make_unique<Rig>();
+    rig->context = std::move(*context);
+    auto fn = gl::Functions::load(*rig->context);
+    REQUIRE_MESSAGE(fn.ok(), fn.error());
+    rig->fn = std::make_unique<gl::Functions>(*fn);
+    auto renderer = render::Renderer::create(*rig->context, *rig->fn, window_test::showcase());
+    REQUIRE_MESSAGE(renderer.ok(), renderer.error());
+    rig->renderer.emplace(std::move(*renderer));
+    return rig;
+}
+
+render::RenderOptions options() {
+    render::RenderOptions o;
+    o.width_px = 256;
+    o.height_px = 144;
+    return o;
+}
+
+image::Image render_image(const Rig& rig, render::Effect effect) {
+    auto picture = rig.renderer->render(effect, window_test::showcase_cameras(), options());
+    REQUIRE_MESSAGE(picture.ok(), picture.error());
+    return std::move(*picture);
+}
+
+int pixels_over(const image::Image& a, const image::Image& b) {
+    const auto diff = image::compare(a, b, 0);
+    REQUIRE_MESSAGE(diff.ok(), diff.error());
+    return diff->pixels_over;
+}
+
+} // namespace
+
+TEST_SUITE("window") {
+
+TEST_CASE("render_into an existing target draws what render() returns") {
+    const auto rig = make_rig();
+    if (!rig) {
+        return;
+    }
+    auto target = gl::OffscreenTarget::create(*rig->fn, {256, 144});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    for (render::Effect effect : render::kAllEffects) {
+        CAPTURE(render::to_string(effect));
+        // Twice into the same target: nothing of the previous frame survives.
+        for (int pass = 0; pass < 2; ++pass) {
+            REQUIRE(rig->renderer->render_into(effect, window_test::showcase_cameras(), options(), *target).ok());
+        }
+        auto drawn = target->read_rgba8();
+        REQUIRE_MESSAGE(drawn.ok(), drawn.error());
+        CHECK(pixels_over(*drawn, render_image(*rig, effect)) == 0);
+    }
+}
+
+TEST_CASE("move_mirror moves the reflection, and the identity puts it back exactly") {
+    const auto rig = make_rig();
+    if (!rig) {
+        return;
+    }
+    const scene::Scene& scene = window_test::showcase();
+    const image::Image before = render_image(*rig, render::Effect::Mirror);
+    window::MirrorPose pose;
+    pose.turn_rad = 0.26f;
+    pose.push_m = 0.3f;
+    const std::vector<int> attached = window::mirror_attachments(scene);
+    REQUIRE(rig->renderer->move_mirror(window::mirror_motion(*scene.mirror, pose), attached).ok());
+    const image::Image moved = render_image(*rig, render::Effect::Mirror);
+    CHECK(pixels_over(before, moved) > 500);
+    // The plain frame shows the moved surface and backing too.
+    CHECK(pixels_over(render_image(*rig, render::Effect::Plain), before) > 0);
+    REQUIRE(rig->renderer->move_mirror(glm::mat4(1.0f), attached).ok());
+    CHECK(pixels_over(before, render_image(*rig, render::Effect::Mirror)) == 0);
+}
+
+TEST_CASE("move_mirror rejects a bad motion or instance") {
+    const auto rig = make_rig();
+    if (!rig) {
+        return;
+    }
+    const auto scaled = rig->renderer->move_mirror(glm::mat4(2.0f), {});
+    REQUIRE_FALSE(scaled.ok());
+    CHECK(scaled.error().rfind("render::Renderer::move_mirror(): motion must be rigid", 0) == 0);
+    const auto out_of_range = rig->renderer->move_mirror(glm::mat4(1.0f), {999});
+    REQUIRE_FALSE(out_of_range.ok());
+    CHECK(out_of_range.error().find("attached instance 999 is out of range") != std::string::npos);
+}
+
+} // TEST_SUITE

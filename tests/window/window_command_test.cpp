@@ -1,0 +1,184 @@
+// `frustum-demo window` as a built binary. Under xvfb-run (an X server in
+// memory; skipped with a message when xvfb-run is not installed) its
+// --screenshot must match `frustum-demo render` of the same view: the
+// window draws with the same renderer into an offscreen target and blits it
+// 1:1, and with no input its camera is the scene's main camera exactly.
+//
+// Tolerance: RGB within 2 per channel on all but 0.5% of the pixels (alpha
+// is not compared: the window is opaque). With Mesa's llvmpipe behind both
+// the surfaceless and the X11 EGL display the images are bit-identical; the
+// slack is for drivers whose window and surfaceless paths differ.
+#include "process.hpp"
+
+#include <doctest/doctest.h>
+
+#include <image/compare.hpp>
+#include <image/image.hpp>
+#include <image/png.hpp>
+#include <render/effect.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+using window_test::Child;
+using window_test::TempDir;
+
+constexpr int kTolerance = 2;
+constexpr double kMaxFractionOver = 0.005;
+
+const std::string kDemo = FRUSTUM_DEMO_EXE;
+
+// The window command under xvfb-run; empty when xvfb-run is missing.
+std::optional<Child> run_window_under_xvfb(const std::vector<std::string>& options) {
+    static const std::string xvfb_run = window_test::find_on_path("xvfb-run");
+    if (xvfb_run.empty()) {
+        MESSAGE("skipping: xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
+        return std::nullopt;
+    }
+    std::vector<std::string> args{"-a", "-s", "-screen 0 1024x768x24", kDemo, "window"};
+    args.insert(args.end(), options.begin(), options.end());
+    return window_test::run(xvfb_run, args);
+}
+
+image::Image read(const std::filesystem::path& path) {
+    auto picture = image::read_png(path.string());
+    REQUIRE_MESSAGE(picture.ok(), picture.error());
+    return std::move(*picture);
+}
+
+// The offscreen renderer's image of `effect` at width x height.
+image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size) {
+    const Child child = window_test::run(
+        kDemo, {"render", "--size", size, "--effect", effect, "--out", (dir / "render").string()});
+    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
+    return read(dir / "render" / (effect + ".png"));
+}
+
+image::Image opaque(image::Image picture) {
+    for (std::size_t alpha = 3; alpha < picture.rgba.size(); alpha += 4) {
+        picture.rgba[alpha] = 255;
+    }
+    return picture;
+}
+
+// The pixels of `picture` inside [x0, x1) x [y0, y1) (rows from the top).
+image::Image crop(const image::Image& picture, int x0, int y0, int x1, int y1) {
+    image::Image part = image::make_image(x1 - x0, y1 - y0, {0, 0, 0, 0});
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            image::set_pixel(part, x - x0, y - y0, image::pixel_at(picture, x, y));
+        }
+    }
+    return part;
+}
+
+void check_similar(const image::Image& window, const image::Image& offscreen, const std::string& what) {
+    const auto diff = image::compare(opaque(window), opaque(offscreen), kTolerance);
+    REQUIRE_MESSAGE(diff.ok(), diff.error());
+    INFO(what << ": " << diff->pixels_over << " of " << diff->pixel_count << " pixels differ by more than "
+              << kTolerance << ", max " << diff->max_abs);
+    CHECK(diff->fraction_over() <= kMaxFractionOver);
+}
+
+} // namespace
+
+TEST_SUITE("window") {
+
+TEST_CASE("the window's screenshot matches the offscreen renderer for every effect") {
+    for (render::Effect effect : render::kAllEffects) {
+        const std::string name(render::to_string(effect));
+        CAPTURE(name);
+        TempDir dir;
+        const std::string shot = (dir / "window.png").string();
+        const auto child =
+            run_window_under_xvfb({"--size", "256x144", "--effect", name, "--frames", "3", "--screenshot", shot});
+        if (!child) {
+            return;
+        }
+        REQUIRE_MESSAGE(child->exit_status == 0, child->err);
+        CHECK(child->out == shot + "\n");
+        const image::Image window = read(shot);
+        CHECK(window.width == 256);
+        CHECK(window.height == 144);
+        check_similar(window, render_offscreen(dir, name, "256x144"), name);
+    }
+}
+
+TEST_CASE("the help overlay and the inset cover only their corners") {
+    TempDir dir;
+    const auto shot = [&](const std::string& file, std::vector<std::string> extra) {
+        std::vector<std::string> options{"--size", "640x360", "--frames", "2", "--screenshot", (dir / file).string()};
+        options.insert(options.end(), extra.begin(), extra.end());
+        return run_window_under_xvfb(options);
+    };
+    const auto plain = shot("plain.png", {});
+    if (!plain) {
+        return;
+    }
+    REQUIRE_MESSAGE(plain->exit_status == 0, plain->err);
+    const auto help = shot("help.png", {"--help-overlay"});
+    const auto inset = shot("inset.png", {"--inset"});
+    REQUIRE_MESSAGE(help->exit_status == 0, help->err);
+    REQUIRE_MESSAGE(inset->exit_status == 0, inset->err);
+    const image::Image base = read(dir / "plain.png");
+    const image::Image with_help = read(dir / "help.png");
+    const image::Image with_inset = read(dir / "inset.png");
+    // The help panel sits top-left and the inset (a third of the width) top-right.
+    check_similar(crop(with_help, 480, 250, 640, 360), crop(base, 480, 250, 640, 360), "outside the help panel");
+    CHECK(image::compare(crop(with_help, 0, 0, 200, 100), crop(base, 0, 0, 200, 100), kTolerance)->pixels_over > 1000);
+    check_similar(crop(with_inset, 0, 150, 640, 360), crop(base, 0, 150, 640, 360), "below the inset");
+    CHECK(image::compare(crop(with_inset, 430, 10, 630, 110), crop(base, 430, 10, 630, 110), kTolerance)->pixels_over >
+          1000);
+}
+
+TEST_CASE("without a display the window command says so and exits 1") {
+    TempDir dir;
+    const std::string shot = (dir / "never.png").string();
+    const Child child = window_test::run(kDemo, {"window", "--frames", "1", "--screenshot", shot},
+                                         {{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}});
+    CHECK(child.exit_status == 1);
+    CHECK(child.out.empty());
+    CHECK(child.err.find("frustum-demo window: error: cannot open a window: ") == 0);
+    CHECK(child.err.find("no display (DISPLAY is not set") != std::string::npos);
+    CHECK(child.err.find("use `frustum-demo render` for offscreen images\n") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(shot));
+}
+
+TEST_CASE("window usage errors exit 2 before opening anything") {
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {{"--frames", "0"}, "--frames must be 1..1000000, got '0'"},
+        {{"--frames", "x"}, "--frames must be 1..1000000, got 'x'"},
+        {{"--screenshot", "a.png"}, "--screenshot needs --frames N"},
+        {{"--size", "0x10"}, "--size must be WxH with 1..8192 each, got '0x10'"},
+        {{"--tiles", "17x1"}, "--tiles must be NxM (columns x rows, 1..16 each), got '17x1'"},
+        {{"--effect", "sepia"}, "unknown effect 'sepia' (expected plain, mirror, tiles, frustum"},
+        {{"--mirror", "flat"}, "unknown mirror method 'flat'"},
+        {{"--colour"}, "unknown option '--colour' of window"},
+        {{"--size"}, "--size needs a value"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args{"window"};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        CAPTURE(c.message);
+        const Child child = window_test::run(kDemo, args, {{"DISPLAY", std::nullopt}});
+        CHECK(child.exit_status == 2);
+        CHECK(child.err.find("frustum-demo window: error: " + c.message) == 0);
+    }
+}
+
+TEST_CASE("window --help lists the options") {
+    const Child child = window_test::run(kDemo, {"window", "--help"});
+    CHECK(child.exit_status == 0);
+    for (const char* option : {"--scene", "--size", "--effect", "--frames", "--screenshot", "--help-overlay", "--inset"}) {
+        CHECK(child.out.find(option) != std::string::npos);
+    }
+}
+
+} // TEST_SUITE
