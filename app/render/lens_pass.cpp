@@ -1,6 +1,7 @@
 #include "render/lens_pass.hpp"
 
 #include "render/scene_pass.hpp"
+#include "render/tile_pass.hpp"
 
 #include <gl/errors.hpp>
 
@@ -59,21 +60,7 @@ frustum::Status draw_lens_frame(const PassContext& ctx, const gl::OffscreenTarge
     if (!tiles) {
         return frustum::Error{"render::draw_lens_frame(): " + tiles.error()};
     }
-    const gl::Functions& fn = ctx.fn;
-    frame.bind();
-    set_frame_state(ctx);
-    fn.Enable(GL_SCISSOR_TEST);
-    for (const frustum::Tile<float>& tile : *tiles) {
-        fn.Viewport(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
-        fn.Scissor(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
-        clear_frame(ctx);
-        SceneDraw scene{tile.pair};
-        scene.skip_instance = draw.skip_instance;
-        draw_scene(ctx, scene);
-    }
-    fn.Disable(GL_SCISSOR_TEST);
-    frame.bind();
-    return gl::check_error(fn, "render::draw_lens_frame()");
+    return draw_tiles(ctx, frame, *tiles, draw.skip_instance, "render::draw_lens_frame()");
 }
 
 } // namespace render

@@ -7,11 +7,23 @@
 
 #include "render/pass_context.hpp"
 
+#include <frustum/crop.hpp>
 #include <frustum/matrix_pair.hpp>
 #include <frustum/result.hpp>
 #include <gl/offscreen_target.hpp>
 
+#include <vector>
+
 namespace render {
+
+// Draws the scene once per tile, each into its own viewport and scissor
+// rectangle with its own pair, after ONE clear of the whole frame (a
+// scissored clear per tile costs a full-screen pass on some drivers:
+// docs/performance.md). skip_instance as in SceneDraw. Shared by the crop
+// tiles (§5.1) and the lens tiles (§5.4). Leaves `frame` bound with its full
+// viewport and the scissor test off.
+frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                           const std::vector<frustum::Tile<float>>& tiles, int skip_instance, const char* where);
 
 // Needs 1 <= columns <= frame width and 1 <= rows <= frame height. Leaves
 // `frame` bound with its full viewport and the scissor test off.

@@ -3,6 +3,7 @@
 #include "frustum/detail/errors.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace frustum {
 
@@ -115,9 +116,14 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
     const auto& x = target.near_points;
     const SidePlanes<T> planes{through(origin, x[3], x[0], centroid), through(origin, x[1], x[2], centroid),
                                through(origin, x[2], x[3], centroid), through(origin, x[0], x[1], centroid), near};
-    const Vec3<T> axis = glm::normalize(centroid - origin);
-    const Vec3<T> far_point = centroid + axis * far_distance_m;
-    auto pair = from_planes(planes, far_point, depth);
+    // Far plane: the nearest that keeps each edge from O through X_i inside
+    // up to far_distance_m beyond X_i (one far point on the axis tilts it into
+    // the volume when the patch is far from a parallelogram).
+    std::vector<Vec3<T>> far_points;
+    for (const Vec3<T>& corner : x) {
+        far_points.push_back(corner + glm::normalize(corner - origin) * far_distance_m);
+    }
+    auto pair = from_planes(planes, far_points, depth);
     if (!pair) {
         return Error{"frustum::fit_volume(): " + pair.error()};
     }

@@ -48,8 +48,9 @@ struct VolumeFit {
 // where T0, T1 and T2 meet (the paper's start; the centroid of X shifted
 // back along the near normal when they do not meet in front of the near
 // plane). Stops when a step gains less than `tolerance` or after
-// max_iterations. far_distance_m: how far beyond the near plane (along the
-// axis through the X centroid) the frustum's far plane lies.
+// max_iterations. far_distance_m: how far beyond the near points, along the
+// edges from O through X_i, the frustum reaches at least (the nearest far
+// plane that keeps all four edges inside that long, as for lens tiles).
 template <class T>
 Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m, DepthRange depth,
                                 int max_iterations = 200, T tolerance = T(1e-10));
