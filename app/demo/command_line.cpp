@@ -1,5 +1,7 @@
 #include "demo/command_line.hpp"
 
+#include "demo/option_values.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -13,31 +15,7 @@ namespace {
 constexpr int kMaxSidePx = 8192;
 constexpr const char* kHelpHint = " (see frustum-demo --help)";
 
-std::string default_scene() { return std::string(FRUSTUM_ASSETS_DIR) + "/showcase.gltf"; }
-
 Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
-
-// "640x360" -> (640, 360): two decimal numbers in [1, max] joined by 'x'.
-std::optional<std::pair<int, int>> parse_pair(std::string_view text, int max) {
-    const std::size_t x = text.find('x');
-    if (x == std::string_view::npos) {
-        return std::nullopt;
-    }
-    const auto number = [max](std::string_view part) -> std::optional<int> {
-        int value = 0;
-        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
-        if (part.empty() || error != std::errc() || end != part.data() + part.size() || value < 1 || value > max) {
-            return std::nullopt;
-        }
-        return value;
-    };
-    const auto first = number(text.substr(0, x));
-    const auto second = number(text.substr(x + 1));
-    if (!first || !second) {
-        return std::nullopt;
-    }
-    return std::pair<int, int>(*first, *second);
-}
 
 // Applies one "--name value" option; empty on success.
 std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std::string& value) {

@@ -1,5 +1,7 @@
 #include "demo/window_command_line.hpp"
 
+#include "demo/option_values.hpp"
+
 #include <charconv>
 #include <iterator>
 #include <string_view>
@@ -13,8 +15,6 @@ constexpr int kMaxSidePx = 8192;
 constexpr int kMaxFrames = 1000000;
 constexpr const char* kHelpHint = " (see frustum-demo window --help)";
 
-std::string default_scene() { return std::string(FRUSTUM_ASSETS_DIR) + "/showcase.gltf"; }
-
 Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 
 std::string effect_names() {
@@ -23,30 +23,6 @@ std::string effect_names() {
         names += (i ? ", " : "") + std::string(render::to_string(render::kAllEffects[i]));
     }
     return names;
-}
-
-std::optional<int> parse_count(std::string_view text, int max) {
-    int value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 1 || value > max) {
-        return std::nullopt;
-    }
-    return value;
-}
-
-// "960x540" -> (960, 540): two counts in [1, max] joined by 'x' (as the
-// render command reads --size and --tiles).
-std::optional<std::pair<int, int>> parse_size(std::string_view text, int max) {
-    const std::size_t x = text.find('x');
-    if (x == std::string_view::npos) {
-        return std::nullopt;
-    }
-    const auto first = parse_count(text.substr(0, x), max);
-    const auto second = parse_count(text.substr(x + 1), max);
-    if (!first || !second) {
-        return std::nullopt;
-    }
-    return std::pair<int, int>(*first, *second);
 }
 
 // Applies one "--name value" option; empty on success.
@@ -63,13 +39,13 @@ std::optional<Failure> apply(WindowRequest& r, std::string_view name, const std:
         }
         r.effect = *effect;
     } else if (name == "--size") {
-        const auto size = parse_size(value, kMaxSidePx);
+        const auto size = parse_pair(value, kMaxSidePx);
         if (!size) {
             return usage("--size must be WxH with 1..8192 each, got " + quoted);
         }
         std::tie(r.width_px, r.height_px) = *size;
     } else if (name == "--tiles") {
-        const auto tiles = parse_size(value, 16);
+        const auto tiles = parse_pair(value, 16);
         if (!tiles) {
             return usage("--tiles must be NxM (columns x rows, 1..16 each), got " + quoted);
         }

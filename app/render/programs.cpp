@@ -1,6 +1,7 @@
 #include "render/programs.hpp"
 
 #include "render/embedded_shaders.hpp"
+#include "render/program_support.hpp"
 
 #include <string>
 #include <string_view>
@@ -9,55 +10,13 @@
 namespace render {
 namespace {
 
-constexpr const char* kBuild = "render::Programs::build()";
-
-// Inserts `defines` after the "#version" line, which must stay first.
-std::string with_defines(std::string_view source, std::string_view defines) {
-    const std::size_t line_end = source.find('\n') + 1;
-    return std::string(source.substr(0, line_end)) + std::string(defines) + std::string(source.substr(line_end));
-}
-
-// Looks up uniforms, remembering the first that is missing.
-class UniformFinder {
-public:
-    UniformFinder(const gl::Functions& fn, const gl::Program& program, const char* program_name)
-        : fn_(fn), program_(program), program_name_(program_name) {}
-
-    void find(GLint& location, const char* name) {
-        location = fn_.GetUniformLocation(program_.id(), name);
-        if (location < 0 && missing_.empty()) {
-            missing_ = name;
-        }
-    }
-
-    frustum::Status status() const {
-        if (missing_.empty()) {
-            return {};
-        }
-        return frustum::Error{std::string(kBuild) + ": " + program_name_ + " program has no active uniform " +
-                              missing_};
-    }
-
-private:
-    const gl::Functions& fn_;
-    const gl::Program& program_;
-    const char* program_name_;
-    std::string missing_;
-};
-
-frustum::Result<gl::Program> link(const gl::Functions& fn, std::string_view vertex, std::string_view fragment,
-                                  const char* name) {
-    auto program = gl::Program::build(fn, vertex, fragment);
-    if (!program) {
-        return frustum::Error{std::string(kBuild) + ": " + name + " program: " + program.error()};
-    }
-    return program;
-}
+using detail::link;
+using detail::UniformFinder;
 
 frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_plane) {
     const char* name = clip_plane ? "clipped scene" : "scene";
     const std::string fragment =
-        clip_plane ? with_defines(shaders::scene_frag, "#define CLIP_PLANE 1\n") : std::string(shaders::scene_frag);
+        clip_plane ? detail::insert_after_version(shaders::scene_frag, "#define CLIP_PLANE 1\n") : std::string(shaders::scene_frag);
     auto program = link(fn, shaders::scene_vert, fragment, name);
     if (!program) {
         return frustum::Error{program.error()};

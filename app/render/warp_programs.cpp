@@ -1,6 +1,7 @@
 #include "render/warp_programs.hpp"
 
 #include "render/embedded_shaders.hpp"
+#include "render/program_support.hpp"
 
 #include <string>
 #include <string_view>
@@ -9,47 +10,8 @@
 namespace render {
 namespace {
 
-constexpr const char* kBuild = "render::Programs::build()";
-
-// `snippet` inserted after the "#version" line, which must stay first.
-std::string with_snippet(std::string_view source, std::string_view snippet) {
-    const std::size_t line_end = source.find('\n') + 1;
-    return std::string(source.substr(0, line_end)) + std::string(snippet) + std::string(source.substr(line_end));
-}
-
-frustum::Result<gl::Program> link(const gl::Functions& fn, std::string_view vertex, std::string_view fragment,
-                                  const char* name) {
-    auto program = gl::Program::build(fn, vertex, fragment);
-    if (!program) {
-        return frustum::Error{std::string(kBuild) + ": " + name + " program: " + program.error()};
-    }
-    return program;
-}
-
-// Looks up uniforms; status() names the first that is missing.
-class Uniforms {
-public:
-    Uniforms(const gl::Functions& fn, const gl::Program& program, const char* name)
-        : fn_(fn), program_(program), name_(name) {}
-    void find(GLint& location, const char* uniform) {
-        location = fn_.GetUniformLocation(program_.id(), uniform);
-        if (location < 0 && missing_.empty()) {
-            missing_ = uniform;
-        }
-    }
-    frustum::Status status() const {
-        if (missing_.empty()) {
-            return {};
-        }
-        return frustum::Error{std::string(kBuild) + ": " + name_ + " program has no active uniform " + missing_};
-    }
-
-private:
-    const gl::Functions& fn_;
-    const gl::Program& program_;
-    const char* name_;
-    std::string missing_;
-};
+using detail::link;
+using Uniforms = detail::UniformFinder;
 
 } // namespace
 
@@ -73,7 +35,7 @@ frustum::Result<LensRemapProgram> build_lens_remap_program(const gl::Functions& 
 }
 
 frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& fn) {
-    const std::string vertex = with_snippet(shaders::non_affine_vert, shaders::frustum_glsl);
+    const std::string vertex = detail::insert_after_version(shaders::non_affine_vert, shaders::frustum_glsl);
     auto program = link(fn, vertex, shaders::scene_frag, "non-affine");
     if (!program) {
         return frustum::Error{program.error()};
