@@ -1,8 +1,10 @@
 #include "frustum/volume_approximation.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/reflect.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace frustum {
@@ -49,11 +51,48 @@ bool intersect3(const Plane<T>& a, const Plane<T>& b, const Plane<T>& c, Vec3<T>
     return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
 }
 
+// The plane through the origin and two points, positive on the side of
+// `inside`; a zero normal (origin on the line through a and b) stays zero and
+// is refused by from_planes.
 template <class T>
 Plane<T> through(const Vec3<T>& origin, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
-    const Vec3<T> normal = glm::normalize(glm::cross(a - origin, b - origin));
+    const Vec3<T> normal = glm::cross(a - origin, b - origin);
     Plane<T> plane(Vec4<T>(normal, -glm::dot(normal, origin)));
     return plane.distance(inside) >= T(0) ? plane : plane.flipped();
+}
+
+template <class T>
+bool finite3(const Vec3<T>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The target must be finite, its side normals non-zero, its near plane a
+// plane, and X0..X3 a quadrilateral with no zero-length side.
+template <class T>
+Status check_target(const VolumeTarget<T>& target) {
+    for (int i = 0; i < 4; ++i) {
+        const Vec3<T>& x = target.near_points[i];
+        const Vec3<T>& t = target.side_normals[i];
+        if (!finite3(x) || !finite3(t) || !(glm::length(t) > T(0))) {
+            return detail::error_text("fit_volume", "near points and side normals must be finite, normals non-zero",
+                                      "X" + std::to_string(i) + "=" + detail::vector_text(x) + " t" +
+                                          std::to_string(i) + "=" + detail::vector_text(t));
+        }
+        const Vec3<T> side = target.near_points[(i + 1) % 4] - x;
+        if (!(glm::length(side) > T(0))) {
+            return detail::error_text("fit_volume", "consecutive near points must differ",
+                                      "X" + std::to_string(i) + "=" + detail::vector_text(x));
+        }
+    }
+    const Vec3<T> diagonal_cross = glm::cross(target.near_points[2] - target.near_points[0],
+                                              target.near_points[3] - target.near_points[1]);
+    if (!(glm::length(diagonal_cross) > T(0))) {
+        return detail::error_text("fit_volume", "near points must span a quadrilateral (they are collinear)", "");
+    }
+    if (const Status s = check_plane(target.near, "fit_volume"); !s) {
+        return s;
+    }
+    return {};
 }
 
 } // namespace
@@ -63,6 +102,9 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
                                 int max_iterations, T tolerance) {
     if (!(far_distance_m > T(0)) || !std::isfinite(far_distance_m)) {
         return detail::error<T>("fit_volume", "far distance must be > 0 and finite", {{"far", far_distance_m}});
+    }
+    if (const Status s = check_target(target); !s) {
+        return Error{s.error()};
     }
     const Plane<T> near = target.near.normalized();
     Vec3<T> centroid(T(0));
@@ -121,7 +163,12 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
     // the volume when the patch is far from a parallelogram).
     std::vector<Vec3<T>> far_points;
     for (const Vec3<T>& corner : x) {
-        far_points.push_back(corner + glm::normalize(corner - origin) * far_distance_m);
+        const T length = glm::length(corner - origin);
+        if (!(length > T(0))) {
+            return detail::error_text("fit_volume", "the fitted origin lies on a near point",
+                                      detail::vector_text(origin));
+        }
+        far_points.push_back(corner + (corner - origin) * (far_distance_m / length));
     }
     auto pair = from_planes(planes, far_points, depth);
     if (!pair) {
