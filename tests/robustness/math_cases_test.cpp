@@ -144,7 +144,7 @@ const std::vector<MathCase>& math_cases() {
              "right plane"}},
         // An all-zero target: X0..X3 coincide, no side plane exists.
         {"fit_volume with a degenerate target", [] { return error_of(fit_volume(VolumeTarget<D>{}, D(10), kZo)); },
-         {"frustum::fit_volume():"}},
+         {"frustum::fit_volume(): near points and side normals must be finite, normals non-zero"}},
     };
     return cases;
 }
