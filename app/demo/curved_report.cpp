@@ -1,6 +1,7 @@
 #include "demo/curved_report.hpp"
 
 #include "demo/output_dir.hpp"
+#include "demo/run_render.hpp"
 
 #include <frustum/queries.hpp>
 #include <gl/context.hpp>
@@ -50,19 +51,6 @@ std::optional<std::vector<int>> parse_counts(const std::string& text) {
         start = comma + 1;
     }
     return out;
-}
-
-// EGL, then OSMesa (as frustum-demo render does), or exactly --backend.
-frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
-    if (request.backend) {
-        return gl::create_offscreen_context(*request.backend, {});
-    }
-    auto egl = gl::create_offscreen_context(gl::Backend::Egl, {});
-    if (egl) {
-        return egl;
-    }
-    reporter.note("note: no EGL context (" + egl.error() + "); using OSMesa");
-    return gl::create_offscreen_context(gl::Backend::OsMesa, {});
 }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {

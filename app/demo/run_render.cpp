@@ -18,7 +18,14 @@ namespace {
 
 Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
-// --backend given: exactly that one. Otherwise EGL, then OSMesa with a note.
+std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
+    return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne
+               ? "depth: [0, 1] clip range via clip control"
+               : "depth: matrices converted to the [-1, 1] clip range";
+}
+
+} // namespace
+
 frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
     gl::ContextOptions options;
     if (request.verbose) {
@@ -36,13 +43,6 @@ frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& 
     return gl::create_offscreen_context(gl::Backend::OsMesa, options);
 }
 
-std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
-    return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne
-               ? "depth: [0, 1] clip range via clip control"
-               : "depth: matrices converted to the [-1, 1] clip range";
-}
-
-} // namespace
 
 std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter) {
     if (auto status = prepare_output_dir(request.out_dir); !status) {

@@ -5,7 +5,11 @@
 #include "demo/command_line.hpp"
 #include "demo/failure.hpp"
 
+#include <frustum/result.hpp>
+#include <gl/context.hpp>
+
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -24,5 +28,10 @@ struct RenderRun {
 
 // The output folder is checked first, before the scene is read.
 std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter);
+
+// The offscreen context for a request: exactly --backend when given,
+// otherwise EGL, then OSMesa with a note. --verbose requests a debug context
+// whose KHR_debug messages go to reporter.note.
+frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter);
 
 } // namespace demo
