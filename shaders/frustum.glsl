@@ -4,7 +4,7 @@
 // (render::Programs does that; tests/gl/render_glsl_twins_test.cpp checks
 // every function against the C++ library).
 //
-// Conventions as in the library (docs/conventions.md, NOTES.md): column
+// Conventions as in the library (docs/conventions.md): column
 // vectors, clip = M * world; row i of M is the paper's column m_i (planes),
 // column i of M^-1 is the paper's row m_i' (key points). The depth range is
 // passed as the clip z of the near and far planes: (0, 1), (-1, 1) or (1, 0).

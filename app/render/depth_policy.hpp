@@ -1,4 +1,4 @@
-// Which clip-space depth range the GPU gets (NOTES.md, "Conventions").
+// Which clip-space depth range the GPU gets (docs/conventions.md).
 // Every camera pair is built with DepthRange::ZeroToOne, the paper's range.
 // When the context has clip control it is switched to GL_ZERO_TO_ONE and the
 // pairs are used as they are; otherwise GL clips z to [-1, 1] and each pair

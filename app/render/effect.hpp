@@ -29,7 +29,7 @@ enum class MirrorMethod {
     // frustum::mirror(): reflect (§5.2, eq. 16) then oblique near plane =
     // the mirror plane, cropped to the mirror's screen rectangle (§5.1).
     Oblique,
-    // frustum::mirror_rectangle(MirrorFit::Exact) (§5.3 with NOTES.md
+    // frustum::mirror_rectangle(MirrorFit::Exact) (§5.3 with docs/errata.md
     // erratum 5): the unreflected scene from the reflected eye through the
     // mirror rectangle.
     Rectangle,

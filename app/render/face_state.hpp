@@ -1,6 +1,6 @@
 // Which triangles face front, and whether back faces are culled, per draw.
 //
-// A reflected view flips triangle winding on screen (NOTES.md erratum 3:
+// A reflected view flips triangle winding on screen (docs/errata.md erratum 3:
 // MatrixPair::flips_winding()), and so does a model matrix with a negative
 // determinant (glTF 2.0, "Transformations": such a node reverses the winding
 // order). Two flips cancel. glFrontFace(GL_CW) draws a flipped draw as

@@ -20,7 +20,7 @@ struct FrustumLineStyle {
 // - the 12 edges: near face C1-C2-C3-C4, far face C5-C6-C7-C8, sides Ci-Ci+4.
 //   A side edge whose far corner is at or beyond infinity (w <= 0: an
 //   infinite far plane, or the tilted far plane of an oblique near plane,
-//   NOTES.md erratum 8) is a ray from its near corner towards the point where
+//   docs/errata.md erratum 8) is a ray from its near corner towards the point where
 //   the edge crosses infinity, drawn infinite_length_m long;
 // - when the eye O is finite: the 4 lines O-C1..O-C4 and a cross at O;
 // - a cross at the centre D, and at O1 and O2 when they are finite.

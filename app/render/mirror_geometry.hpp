@@ -14,7 +14,7 @@
 namespace render {
 
 // Whole pixels, offset from the bottom-left corner (glViewport's and
-// frustum::CropRect's convention, NOTES.md erratum 1).
+// frustum::CropRect's convention, docs/errata.md erratum 1).
 struct PixelRect {
     int x = 0, y = 0, width = 0, height = 0;
 };
@@ -41,7 +41,7 @@ struct ReflectionView {
 
 // The reflection camera for `method` (see effect.hpp):
 // - Oblique: frustum::mirror(camera, plane) (§5.2: R of eq. 16, then the
-//   mirror plane as oblique near plane, eq. 24-27 with NOTES.md erratum 2),
+//   mirror plane as oblique near plane, eq. 24-27 with docs/errata.md erratum 2),
 //   cropped (§5.1) to mirror_screen_rect(). R fixes every point of the plane,
 //   so on the mirror the reflected pair maps world to clip x, y, w exactly as
 //   the camera does: texel (i, j) of a texture the size of the rectangle is

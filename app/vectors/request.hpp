@@ -1,4 +1,4 @@
-// The typed form of a frustum-vectors request (shared/spec/vectors.md).
+// The typed form of a frustum-vectors request (docs/vectors-contract.md).
 // Plain data, filled by parse_request() and read by evaluate(); numbers are
 // exactly as given (they may be infinite: "1e999" is a geometric error of
 // its case, found by the library, not a malformed request).

@@ -1,4 +1,4 @@
-// Outcomes -> the response document of shared/spec/vectors.md.
+// Outcomes -> the response document of docs/vectors-contract.md.
 #pragma once
 
 #include "vectors/evaluate.hpp"

@@ -45,7 +45,7 @@ standard output: for each case the matrix pair (column-major, as GLM stores
 it), the normalized inward planes, the corners C1..C8, the centre D, the
 vanishing points O, O1, O2, the section 5.5 validity, and for given points
 their clip coordinates and whether they are inside. The computation runs in
-double. The contract is shared/spec/vectors.md; in short:
+double. The contract is docs/vectors-contract.md; in short:
 
   {"cases": [{"id": "name", "depth": "zero_to_one",
               "camera": {"perspective": {"fovy_deg": 60, "aspect": 1.5,

@@ -1,5 +1,5 @@
 // frustum-vectors: JSON camera descriptions on stdin -> matrices, inverses,
-// planes and key points on stdout (contract: shared/spec/vectors.md).
+// planes and key points on stdout (contract: docs/vectors-contract.md).
 // These functions write only to the streams they are given; main() passes
 // std::cin, std::cout and std::cerr.
 #pragma once

@@ -2,7 +2,7 @@
 // vectors::run_frustum_vectors (the whole tool but the process streams).
 //
 // Besides "no crash" (ASan + UBSan, float division by zero included), each
-// run is checked against shared/spec/vectors.md and run.hpp:
+// run is checked against docs/vectors-contract.md and run.hpp:
 //   exit 0: stdout is one strict JSON document {"cases": [...]} with one
 //           answer per case, each with "id" and "ok" (and "error" when
 //           ok is false); nothing on stderr;

@@ -299,7 +299,7 @@ TEST_CASE("clip_oblique: over random rotated views the paper's choice often lose
         ours_loses += lost_ours;
     }
     CHECK(ours_loses == 0);
-    // NOTES.md measured 66% on its sample; assert a clear share.
+    // docs/errata.md (erratum 2) measured 66% on its sample; assert a clear share.
     CHECK(paper_loses > cases / 5);
 }
 

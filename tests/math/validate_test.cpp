@@ -1,7 +1,7 @@
 // validate() (paper §5.5): the near face is a convex quadrilateral that
 // separates the eye from the body. Ordinary cameras pass; hand-built bad
 // matrices fail with the right reason(); the literal §5.5 test rejects many
-// obliquely clipped frustums (NOTES.md erratum 14), pinned as a known miss.
+// obliquely clipped frustums (docs/errata.md erratum 14), pinned as a known miss.
 #include "support.hpp"
 
 #include <glm/ext/matrix_clip_space.hpp>
@@ -153,7 +153,7 @@ TEST_CASE_TEMPLATE("validate: KNOWN MISS, literal §5.5 rejects many obliquely c
     }
     // Measured with this seed (float and double alike): 437 proper, 136 of
     // them invalid; 562 improper, all invalid; 1 borderline skipped. So
-    // 301 of 1000 pass (NOTES.md: 433 of 2000 on its own sample).
+    // 301 of 1000 pass (docs/errata.md: 433 of 2000 on its own sample).
     CHECK(proper > 200);
     CHECK(proper_invalid > 0);
     CHECK(proper_invalid < proper); // most proper clips stay valid

@@ -1,4 +1,4 @@
-// frustum-vectors as a built binary (shared/spec/vectors.md): bad arguments
+// frustum-vectors as a built binary (docs/vectors-contract.md): bad arguments
 // and malformed requests exit 2 with one "frustum-vectors: <place>: ..." line
 // on stderr and NOTHING on stdout; a failed write exits 1; well-formed but
 // impossible cases exit 0 with "ok": false.

@@ -13,7 +13,7 @@ namespace frustum {
 
 // A sub-rectangle of the full image in any consistent unit (pixels,
 // metres on the near plane, ...). The offset is from the BOTTOM-LEFT
-// corner (NOTES.md erratum 1; GL's image rows also start at the bottom).
+// corner (docs/errata.md erratum 1; GL's image rows also start at the bottom).
 template <class T>
 struct CropRect {
     T x = 0, y = 0, width = 0, height = 0;

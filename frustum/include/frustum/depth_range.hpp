@@ -1,6 +1,6 @@
 // DepthRange: where the near and far planes land in clip-space z/w. It is
 // part of every MatrixPair, so a recipe written for one range can never be
-// silently applied to another (NOTES.md, "Conventions").
+// silently applied to another (docs/conventions.md).
 #pragma once
 
 #include <string_view>

@@ -39,7 +39,7 @@ template <class T>
 Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector<Vec3<T>>& far_points,
                                   DepthRange depth);
 
-// §4.2 with the stop criterion corrected (NOTES.md erratum 12): start at
+// §4.2 with the stop criterion corrected (docs/errata.md erratum 12): start at
 // eq. 13, K_n = |z_f - z_n| (m3.xyz . N.xyz) / |N.xyz|^2, step by the paper's
 // delta and double it, until every far corner C5..C8 is a finite point in
 // front of the eye (w > 1e-6 |xyz| with w > 0 inside).

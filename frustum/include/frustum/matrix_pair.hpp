@@ -29,7 +29,7 @@ public:
     const Mat4<T>& inverse() const { return inverse_; }
     DepthRange depth() const { return static_cast<DepthRange>(traits_ & depth_mask); }
     // True after an odd number of reflections: draw with the front face
-    // swapped (NOTES.md erratum 3).
+    // swapped (docs/errata.md erratum 3).
     bool flips_winding() const { return (traits_ & flips_bit) != 0; }
 
     // The same frustum for another depth range: only row 2 of M changes,

@@ -11,7 +11,7 @@ namespace frustum {
 // Keeps the plane's positive side. The eye must be strictly on its negative
 // side (paper: c . O < 0), and some of the frustum must stay visible.
 //
-// Column form, depth range (z_n, z_f) (NOTES.md erratum 2):
+// Column form, depth range (z_n, z_f) (docs/errata.md erratum 2):
 //   c' = M^-T c                      the plane in clip space
 //   q  = (sgn c'_x, sgn c'_y, z_f, 1)  the far corner farthest on its side
 //   k  = (m3 . Q) / (c . Q) = 1 / (c' . q)        with Q = M^-1 q

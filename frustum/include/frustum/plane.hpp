@@ -48,7 +48,7 @@ struct Plane {
     Plane flipped() const { return Plane(-abcd); }
 
     // True when the normal is (relatively) zero: no plane, e.g. the far
-    // plane of an infinite frustum (NOTES.md erratum 9).
+    // plane of an infinite frustum (docs/errata.md erratum 9).
     bool is_degenerate(T relative_tolerance) const {
         const T n = glm::length(normal());
         return !(n > relative_tolerance * std::abs(abcd.w)) || !std::isfinite(n);

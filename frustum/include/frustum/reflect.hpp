@@ -16,7 +16,7 @@ Mat4<T> reflection_matrix(const Plane<T>& unit_plane);
 // P' = P R, P'^-1 = R P^-1 (the paper's R P and P^-1 R, transposed), done
 // as rank-one updates: M' = M - 2 (M n) c^T, inv' = inv - 2 n (c^T inv).
 // The plane need not be normalized; either side may face the eye. The
-// result flips triangle winding (NOTES.md erratum 3).
+// result flips triangle winding (docs/errata.md erratum 3).
 template <class T>
 Result<MatrixPair<T>> reflect(const MatrixPair<T>& pair, const Plane<T>& plane);
 

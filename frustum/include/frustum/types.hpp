@@ -12,7 +12,7 @@ template <class T> using Vec4 = glm::vec<4, T, glm::defaultp>;
 template <class T> using Mat3 = glm::mat<3, 3, T, glm::defaultp>;
 template <class T> using Mat4 = glm::mat<4, 4, T, glm::defaultp>;
 
-// Row i of a column-major GLM matrix: the paper's column m_i (NOTES.md).
+// Row i of a column-major GLM matrix: the paper's column m_i (docs/conventions.md).
 template <class T>
 Vec4<T> row(const Mat4<T>& m, int i) {
     return Vec4<T>(m[0][i], m[1][i], m[2][i], m[3][i]);

@@ -2,7 +2,7 @@
 // that separates the origin (eye) from the body (far corners).
 //
 // Taken literally this rejects many obliquely clipped frustums, whose tilted
-// far plane misses side edges in front of the eye (NOTES.md erratum 14):
+// far plane misses side edges in front of the eye (docs/errata.md erratum 14):
 // validate before the clip; clip_oblique() checks the clip itself.
 #pragma once
 

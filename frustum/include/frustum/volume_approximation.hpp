@@ -7,7 +7,7 @@
 // in the points X0..X3 (clockwise), the side plane i of a frustum with
 // origin O has the normal n_i = (X_i - O) x (X_i+1 - O). O maximizes
 //   F(O) = sum_i F_i^2,  F_i = (n_i . t_i) / |n_i|  (= cos alpha_i).
-// The paper's printed partial derivatives are wrong (NOTES.md erratum 6);
+// The paper's printed partial derivatives are wrong (docs/errata.md erratum 6);
 // with d = X_i - X_i+1 the exact gradient is
 //   grad(n_i . t_i) = d x t_i,   grad |n_i|^2 = 2 d x n_i,
 //   grad F_i^2 = 2 (n.t)(d x t) / |n|^2 - 2 (n.t)^2 (d x n) / |n|^4,
