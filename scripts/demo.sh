@@ -29,7 +29,7 @@ fi
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 demo=$build_dir/app/demo/frustum-demo
 if [[ ! -x $demo ]]; then
-  echo "demo.sh: $demo not found; build first (make build)" >&2
+  echo "demo.sh: $demo not found; build it first (make demo does)" >&2
   exit 1
 fi
 
