@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the frustum library alone (no app dependencies, -std=c++17,
 # -fno-exceptions), installs it into a temporary prefix, then builds and runs
-# the consumer project against the installed package.
+# against the installed package: the consumer project, and the README's
+# library snippet exactly as printed (the C++ block between the markers
+# `<!-- readme-snippet: begin -->` and `<!-- readme-snippet: end -->`).
 #   tests/package/run.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 source_dir=$1
@@ -16,3 +18,30 @@ cmake -S "$source_dir/tests/package/consumer" -B "$work/consumer" -DCMAKE_PREFIX
   -DCMAKE_CXX_FLAGS="-fno-exceptions" >/dev/null
 cmake --build "$work/consumer" >/dev/null
 "$work/consumer/consumer"
+
+# The README snippet: the lines inside the one ```cpp fence between the markers.
+readme=$source_dir/README.md
+snippet=$work/readme_snippet.cpp
+awk '
+  /<!-- readme-snippet: begin -->/ { if (inside) { print "second begin marker" > "/dev/stderr"; exit 3 } inside = 1; found = 1; next }
+  /<!-- readme-snippet: end -->/   { inside = 0; next }
+  inside && /^```/                 { fence = !fence; next }
+  inside && fence                  { print }
+  END                              { if (!found || inside) exit 3 }
+' "$readme" >"$snippet" || {
+  echo "package: README.md has no complete '<!-- readme-snippet: begin -->' ... '<!-- readme-snippet: end -->' block" >&2
+  exit 1
+}
+if ! grep -q "int main" "$snippet"; then
+  echo "package: the README snippet ($(wc -l <"$snippet") lines) has no main(); it must be a complete program" >&2
+  exit 1
+fi
+cmake -S "$source_dir/tests/package/readme_snippet" -B "$work/readme" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DSNIPPET_SOURCE="$snippet" -DCMAKE_CXX_FLAGS="-fno-exceptions" >/dev/null
+if ! cmake --build "$work/readme" >"$work/readme-build.log" 2>&1; then
+  cat "$work/readme-build.log" >&2
+  echo "package: the README snippet does not compile against the installed package (errors above; source $snippet)" >&2
+  exit 1
+fi
+echo "package: README snippet ($(wc -l <"$snippet") lines) compiled; running it:"
+"$work/readme/readme_snippet"
