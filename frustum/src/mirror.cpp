@@ -2,6 +2,7 @@
 
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
+#include "frustum/detail/pair_updates.hpp"
 #include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
@@ -12,8 +13,13 @@
 
 namespace frustum {
 
+namespace {
+
+// The normalized reference form (reflect, then the clip core with the unit
+// plane). Only reached when a check of the fast form below fails: it gives
+// the refusal and its text, or the result at a check's rounding boundary.
 template <class T>
-Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
+FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "mirror");
     if (!unit) {
         return Error{unit.error()};
@@ -43,6 +49,44 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
         return Error{clipped.error()};
     }
     return clipped;
+}
+
+} // namespace
+
+// The fast form: one pass over the plane as given. The reflection uses
+// 2 / |n|^2 instead of normalizing (M' = M - (2/|n|^2) (M n) p^T,
+// inv' = inv - (2/|n|^2) n (p^T inv)); the products p . inv_j serve both the
+// reflected inverse and the plane in the reflected clip space,
+// c' = -(M^-T p); the reflected columns go straight to the clip step, with
+// Q and m3 . Q from the unreflected pair (oblique_clip_core.hpp).
+template <class T>
+Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
+    const Vec4<T>& p = plane.abcd;
+    const T length_squared = detail::normal_length_squared(p);
+    if (!detail::plane_usable(p, length_squared)) {
+        return detail::plane_error(p, "mirror");
+    }
+    const Mat4<T>& m = pair.matrix();
+    const Mat4<T>& inv = pair.inverse();
+    const Vec4<T> p_inv(glm::dot(p, inv[0]), glm::dot(p, inv[1]), glm::dot(p, inv[2]), glm::dot(p, inv[3]));
+    const Vec4<T> c_clip = -p_inv;
+    // The real eye in front of the mirror: for the unit plane
+    // eye_side > 64 eps |inv_2|; here squared and scaled by |n|^2.
+    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip.z;
+    const T floor = T(64) * std::numeric_limits<T>::epsilon();
+    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * glm::dot(inv[2], inv[2]) * length_squared)) {
+        return mirror_reference(pair, plane);
+    }
+    const T two_over_n2 = T(2) / length_squared;
+    const Vec4<T> n(p.x, p.y, p.z, T(0));
+    const Vec4<T> m_n = m * n;
+    const Mat4<T> reflected(m[0] - (two_over_n2 * p[0]) * m_n, m[1] - (two_over_n2 * p[1]) * m_n,
+                            m[2] - (two_over_n2 * p[2]) * m_n, m[3] - (two_over_n2 * p[3]) * m_n);
+    const Mat4<T> reflected_inv(inv[0] - (two_over_n2 * p_inv[0]) * n, inv[1] - (two_over_n2 * p_inv[1]) * n,
+                                inv[2] - (two_over_n2 * p_inv[2]) * n, inv[3] - (two_over_n2 * p_inv[3]) * n);
+    return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, row(m, 3), T(-1), pair.depth(),
+                                detail::PairFactory::flipped_traits(pair),
+                                [&] { return mirror_reference(pair, plane); });
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/pair_updates.hpp"
 #include "frustum/reflect.hpp"
 
 #include <cmath>
@@ -81,8 +82,14 @@ template Result<MatrixPair<double>> clip_oblique_in_clip_space(const MatrixPair<
 
 } // namespace detail
 
+namespace {
+
+// The normalized reference form: the unit plane, then the core above. Only
+// reached when a check of the fast form fails (detail::clip_columns): it
+// gives the refusal and its text, or the result at a check's rounding
+// boundary.
 template <class T>
-Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
+FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "clip_oblique");
     if (!unit) {
         return Error{unit.error()};
@@ -92,6 +99,23 @@ Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& pl
     const Mat4<T>& inv = pair.inverse();
     const Vec4<T> c_clip(glm::dot(c, inv[0]), glm::dot(c, inv[1]), glm::dot(c, inv[2]), glm::dot(c, inv[3]));
     return detail::clip_oblique_in_clip_space(pair, c, c_clip, pair, T(1), "clip_oblique");
+}
+
+} // namespace
+
+// The fast form: the plane as given (the clip is invariant under its scale,
+// so it is not normalized), c' = M^-T p, then detail::clip_columns.
+template <class T>
+Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
+    const Vec4<T>& p = plane.abcd;
+    if (!detail::plane_usable(p, detail::normal_length_squared(p))) {
+        return detail::plane_error(p, "clip_oblique");
+    }
+    const Mat4<T>& inv = pair.inverse();
+    const Vec4<T> c_clip(glm::dot(p, inv[0]), glm::dot(p, inv[1]), glm::dot(p, inv[2]), glm::dot(p, inv[3]));
+    return detail::clip_columns(pair.matrix(), inv, p, c_clip, inv, row(pair.matrix(), 3), T(1), pair.depth(),
+                                detail::PairFactory::traits(pair),
+                                [&] { return clip_oblique_reference(pair, plane); });
 }
 
 template Result<MatrixPair<float>> clip_oblique(const MatrixPair<float>&, const Plane<float>&);
