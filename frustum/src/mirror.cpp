@@ -61,30 +61,34 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
 // Q and m3 . Q from the unreflected pair (oblique_clip_core.hpp).
 template <class T>
 Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
-    const Vec4<T>& p = plane.abcd;
-    const T length_squared = detail::normal_length_squared(p);
-    if (!detail::plane_usable(p, length_squared)) {
-        return detail::plane_error(p, "mirror");
+    using detail::V4;
+    const T length_squared = detail::normal_length_squared(plane.abcd);
+    if (!detail::plane_usable(plane.abcd, length_squared)) {
+        return detail::plane_error(plane.abcd, "mirror");
     }
-    const Mat4<T>& m = pair.matrix();
-    const Mat4<T>& inv = pair.inverse();
-    const Vec4<T> p_inv(glm::dot(p, inv[0]), glm::dot(p, inv[1]), glm::dot(p, inv[2]), glm::dot(p, inv[3]));
-    const Vec4<T> c_clip = -p_inv;
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
+    const V4<T> p = detail::load(plane.abcd);
+    const V4<T> p_inv = detail::dots(detail::transpose(inv), p); // p . inv_j
+    const V4<T> c_clip = -p_inv;
     // The real eye in front of the mirror: for the unit plane
     // eye_side > 64 eps |inv_2|; here squared and scaled by |n|^2.
-    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip.z;
+    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip[2];
     const T floor = T(64) * std::numeric_limits<T>::epsilon();
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * glm::dot(inv[2], inv[2]) * length_squared)) {
+    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * detail::dot<T>(inv.c[2], inv.c[2]) * length_squared)) {
         return mirror_reference(pair, plane);
     }
     const T two_over_n2 = T(2) / length_squared;
-    const Vec4<T> n(p.x, p.y, p.z, T(0));
-    const Vec4<T> m_n = m * n;
-    const Mat4<T> reflected(m[0] - (two_over_n2 * p[0]) * m_n, m[1] - (two_over_n2 * p[1]) * m_n,
-                            m[2] - (two_over_n2 * p[2]) * m_n, m[3] - (two_over_n2 * p[3]) * m_n);
-    const Mat4<T> reflected_inv(inv[0] - (two_over_n2 * p_inv[0]) * n, inv[1] - (two_over_n2 * p_inv[1]) * n,
-                                inv[2] - (two_over_n2 * p_inv[2]) * n, inv[3] - (two_over_n2 * p_inv[3]) * n);
-    return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, row(m, 3), T(-1), pair.depth(),
+    const V4<T> n{p[0], p[1], p[2], T(0)};
+    const V4<T> m_n = detail::mat_vec(m, n);
+    const V4<T> f_p = two_over_n2 * p, f_p_inv = two_over_n2 * p_inv;
+    detail::Cols<T> reflected, reflected_inv;
+    for (int j = 0; j < 4; ++j) {
+        reflected.c[j] = m.c[j] - f_p[j] * m_n;
+        reflected_inv.c[j] = inv.c[j] - f_p_inv[j] * n;
+    }
+    const V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, m_row3, T(-1), pair.depth(),
                                 detail::PairFactory::flipped_traits(pair),
                                 [&] { return mirror_reference(pair, plane); });
 }

@@ -107,14 +107,15 @@ FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& p
 // so it is not normalized), c' = M^-T p, then detail::clip_columns.
 template <class T>
 Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
-    const Vec4<T>& p = plane.abcd;
-    if (!detail::plane_usable(p, detail::normal_length_squared(p))) {
-        return detail::plane_error(p, "clip_oblique");
+    if (!detail::plane_usable(plane.abcd, detail::normal_length_squared(plane.abcd))) {
+        return detail::plane_error(plane.abcd, "clip_oblique");
     }
-    const Mat4<T>& inv = pair.inverse();
-    const Vec4<T> c_clip(glm::dot(p, inv[0]), glm::dot(p, inv[1]), glm::dot(p, inv[2]), glm::dot(p, inv[3]));
-    return detail::clip_columns(pair.matrix(), inv, p, c_clip, inv, row(pair.matrix(), 3), T(1), pair.depth(),
-                                detail::PairFactory::traits(pair),
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
+    const detail::V4<T> p = detail::load(plane.abcd);
+    const detail::V4<T> c_clip = detail::dots(detail::transpose(inv), p);
+    const detail::V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    return detail::clip_columns(m, inv, p, c_clip, inv, m_row3, T(1), pair.depth(), detail::PairFactory::traits(pair),
                                 [&] { return clip_oblique_reference(pair, plane); });
 }
 

@@ -13,7 +13,8 @@ struct EigenInverse {
     template <class T>
     frustum::Mat4<T> operator()(const frustum::Mat4<T>& m) const {
         frustum::Mat4<T> out;
-        Eigen::Map<Eigen::Matrix<T, 4, 4>>(&out[0][0]) = Eigen::Map<const Eigen::Matrix<T, 4, 4>>(&m[0][0]).inverse();
+        Eigen::Map<Eigen::Matrix<T, 4, 4>> destination(&out[0][0]);
+        destination = Eigen::Map<const Eigen::Matrix<T, 4, 4>>(&m[0][0]).inverse();
         return out;
     }
 };

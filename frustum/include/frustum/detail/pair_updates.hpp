@@ -12,6 +12,7 @@
 
 #include "frustum/crop.hpp"
 #include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/simd4.hpp"
 #include "frustum/plane.hpp"
 
 #include <cmath>
@@ -79,21 +80,17 @@ FRUSTUM_HOT_INLINE CropMap<T> crop_map(const CropRect<T>& r) {
 // M_j * (sx, sy, 1, 1) + M_j.w * (tx, ty, 0, 0). The inverse undoes it
 // column-wise: inv0 / sx, inv1 / sy, inv3 - (tx / sx) inv0 - (ty / sy) inv1.
 template <class T>
-FRUSTUM_HOT_INLINE Vec4<T> scale_offset_column(const Vec4<T>& column, const Vec4<T>& scale, const Vec4<T>& offset) {
-    return column * scale + column.w * offset;
-}
-
-template <class T>
 FRUSTUM_HOT_INLINE Result<MatrixPair<T>> scale_offset_xy(const MatrixPair<T>& pair, T sx, T tx, T sy, T ty) {
-    const Mat4<T>& m = pair.matrix();
-    const Mat4<T>& inv = pair.inverse();
-    const Vec4<T> scale(sx, sy, T(1), T(1));
-    const Vec4<T> offset(tx, ty, T(0), T(0));
+    const Cols<T> m = load(pair.matrix());
+    const Cols<T> inv = load(pair.inverse());
+    const V4<T> scale{sx, sy, T(1), T(1)};
+    const V4<T> offset{tx, ty, T(0), T(0)};
     const T inv_sx = T(1) / sx, inv_sy = T(1) / sy;
-    return PairFactory::keep_sign_result<T>(
-        scale_offset_column(m[0], scale, offset), scale_offset_column(m[1], scale, offset),
-        scale_offset_column(m[2], scale, offset), scale_offset_column(m[3], scale, offset), inv[0] * inv_sx,
-        inv[1] * inv_sy, inv[2], inv[3] - (tx * inv_sx) * inv[0] - (ty * inv_sy) * inv[1], PairFactory::traits(pair));
+    const auto column = [&](int j) { return store<T>(m.c[j] * scale + m.c[j][3] * offset); };
+    return PairFactory::keep_sign_result<T>(column(0), column(1), column(2), column(3), store<T>(inv.c[0] * inv_sx),
+                                            store<T>(inv.c[1] * inv_sy), store<T>(inv.c[2]),
+                                            store<T>(inv.c[3] - (tx * inv_sx) * inv.c[0] - (ty * inv_sy) * inv.c[1]),
+                                            PairFactory::traits(pair));
 }
 
 // ---- reflect (eq. 16, rank-one form) ----
@@ -102,16 +99,18 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> scale_offset_xy(const MatrixPair<T>& pa
 // inv' = R inv = inv - 2 n (c^T inv): column j gets -2 (c . inv_j) n.
 // c is the unit plane.
 template <class T>
-FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair, const Vec4<T>& c) {
-    const Mat4<T>& m = pair.matrix();
-    const Mat4<T>& inv = pair.inverse();
-    const Vec4<T> n(c.x, c.y, c.z, T(0));
-    const Vec4<T> m_n = m * n;
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair, const Vec4<T>& unit_plane) {
+    const Cols<T> m = load(pair.matrix());
+    const Cols<T> inv = load(pair.inverse());
+    const V4<T> c = load(unit_plane);
+    const V4<T> n{c[0], c[1], c[2], T(0)};
+    const V4<T> m_n = mat_vec(m, n);
+    const V4<T> two_c = T(2) * c;
+    const V4<T> two_c_inv = T(2) * dots(transpose(inv), c); // 2 (c . inv_j)
     return PairFactory::keep_sign_result<T>(
-        m[0] - (T(2) * c[0]) * m_n, m[1] - (T(2) * c[1]) * m_n, m[2] - (T(2) * c[2]) * m_n,
-        m[3] - (T(2) * c[3]) * m_n, inv[0] - (T(2) * glm::dot(c, inv[0])) * n,
-        inv[1] - (T(2) * glm::dot(c, inv[1])) * n, inv[2] - (T(2) * glm::dot(c, inv[2])) * n,
-        inv[3] - (T(2) * glm::dot(c, inv[3])) * n, PairFactory::flipped_traits(pair));
+        store<T>(m.c[0] - two_c[0] * m_n), store<T>(m.c[1] - two_c[1] * m_n), store<T>(m.c[2] - two_c[2] * m_n),
+        store<T>(m.c[3] - two_c[3] * m_n), store<T>(inv.c[0] - two_c_inv[0] * n), store<T>(inv.c[1] - two_c_inv[1] * n),
+        store<T>(inv.c[2] - two_c_inv[2] * n), store<T>(inv.c[3] - two_c_inv[3] * n), PairFactory::flipped_traits(pair));
 }
 
 // ---- oblique clip (eq. 20-27, column form; oblique_clip.hpp) ----
@@ -129,9 +128,9 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 // b = c . Q, k (z_f - z_n) = a / b and X_2 = (a / b) c'_z, so g = 1 / (a b c'_z)
 // gives both: (z_f - z_n) k = a a c'_z g and 1 / X_2 = b b g.
 template <class T, class Slow>
-FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Mat4<T>& m, const Mat4<T>& inv, const Vec4<T>& p,
-                                                      const Vec4<T>& c_clip, const Mat4<T>& k_inverse,
-                                                      const Vec4<T>& k_row3, T k_sign, DepthRange depth,
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Cols<T>& inv, const V4<T>& p,
+                                                      const V4<T>& c_clip, const Cols<T>& k_inverse,
+                                                      const V4<T>& k_row3, T k_sign, DepthRange depth,
                                                       unsigned traits, Slow&& slow) {
     const T z_near = clip_z_near<T>(depth);
     const T z_far = clip_z_far<T>(depth);
@@ -140,36 +139,42 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Mat4<T>& m, const Ma
     const T floor = T(64) * eps;
 
     // Eye strictly on the negative side, relative to the eye column's size.
-    const T eye_side = span * c_clip.z;
-    const T eye_scale_squared = glm::dot(inv[2], inv[2]) * glm::dot(p, p);
+    const T eye_side = span * c_clip[2];
+    const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
     // Far corner on the plane's positive side (erratum 2), not a sliver.
-    const Vec4<T> q(std::copysign(T(1), c_clip.x), std::copysign(T(1), c_clip.y), z_far, T(1));
-    const T c_dot_q = glm::dot(c_clip, q);
-    const T scale = std::abs(c_clip.x) + std::abs(c_clip.y) + std::abs(c_clip.z) + std::abs(c_clip.w);
+    const V4<T> q{std::copysign(T(1), c_clip[0]), std::copysign(T(1), c_clip[1]), z_far, T(1)};
+    const T c_dot_q = dot<T>(c_clip, q);
+    const T scale = std::abs(c_clip[0]) + std::abs(c_clip[1]) + std::abs(c_clip[2]) + std::abs(c_clip[3]);
 
     // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (analytic-inverse-accuracy.md).
-    const Vec4<T> big_q = k_inverse * q;
-    const T a = span * (k_sign * glm::dot(k_row3, big_q));
-    const T b = glm::dot(p, big_q);
-    const T denominator = a * b * c_clip.z;
+    const V4<T> big_q = mat_vec(k_inverse, q);
+    const T a = span * (k_sign * dot<T>(k_row3, big_q));
+    const T b = dot<T>(p, big_q);
+    const T denominator = a * b * c_clip[2];
     if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
           std::isnormal(denominator))) {
         return slow();
     }
     const T g = T(1) / denominator;
-    const T span_k = a * a * c_clip.z * g;
+    const T span_k = a * a * c_clip[2] * g;
     const T inv_x2 = b * b * g;
 
-    // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3.
-    // T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
+    // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
+    // column j. T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
     // column j - (X_j / X_2) column 2.
-    const Vec4<T> x = span_k * c_clip + Vec4<T>(T(0), T(0), T(0), z_near);
+    const V4<T> m_w{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    const V4<T> row2 = span_k * p + z_near * m_w;
+    const auto column = [&](int j) {
+        V4<T> out = m.c[j];
+        out[2] = row2[j];
+        return store<T>(out);
+    };
+    const V4<T> x = span_k * c_clip + V4<T>{T(0), T(0), T(0), z_near};
+    const V4<T> x_over_x2 = x * inv_x2;
     return PairFactory::keep_sign_result<T>(
-        Vec4<T>(m[0].x, m[0].y, span_k * p[0] + z_near * m[0].w, m[0].w),
-        Vec4<T>(m[1].x, m[1].y, span_k * p[1] + z_near * m[1].w, m[1].w),
-        Vec4<T>(m[2].x, m[2].y, span_k * p[2] + z_near * m[2].w, m[2].w),
-        Vec4<T>(m[3].x, m[3].y, span_k * p[3] + z_near * m[3].w, m[3].w), inv[0] - (x.x * inv_x2) * inv[2],
-        inv[1] - (x.y * inv_x2) * inv[2], inv[2] * inv_x2, inv[3] - (x.w * inv_x2) * inv[2], traits);
+        column(0), column(1), column(2), column(3), store<T>(inv.c[0] - x_over_x2[0] * inv.c[2]),
+        store<T>(inv.c[1] - x_over_x2[1] * inv.c[2]), store<T>(inv.c[2] * inv_x2),
+        store<T>(inv.c[3] - x_over_x2[3] * inv.c[2]), traits);
 }
 
 } // namespace frustum::detail
