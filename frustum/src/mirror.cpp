@@ -53,12 +53,11 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
 
 } // namespace
 
-// The fast form: one pass over the plane as given. The reflection uses
-// 2 / |n|^2 instead of normalizing (M' = M - (2/|n|^2) (M n) p^T,
-// inv' = inv - (2/|n|^2) n (p^T inv)); the products p . inv_j serve both the
-// reflected inverse and the plane in the reflected clip space,
-// c' = -(M^-T p); the reflected columns go straight to the clip step, with
-// Q and m3 . Q from the unreflected pair (oblique_clip_core.hpp).
+// The fast form: the reference form's arithmetic in one inlined pass. The
+// reflected columns go straight to the clip step, with c' = -(M^-T c), Q and
+// m3 . Q from the unreflected pair (oblique_clip_core.hpp). (Reflecting with
+// 2 / |n|^2 instead of normalizing twice was measured: a few % higher mean
+// and p99.9 error in some depth ranges, so the reference's bits are kept.)
 template <class T>
 Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     using detail::V4;
@@ -68,24 +67,25 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    const V4<T> p = detail::load(plane.abcd);
-    const V4<T> p_inv = detail::dots(detail::transpose(inv), p); // p . inv_j
-    const V4<T> c_clip = -p_inv;
-    // The real eye in front of the mirror: for the unit plane
-    // eye_side > 64 eps |inv_2|; here squared and scaled by |n|^2.
+    const V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared)); // unit
+    const V4<T> c_clip = -detail::dots(detail::transpose(inv), p);
+    // The real eye in front of the mirror: eye_side > 64 eps |inv_2|.
     const T eye_side = clip_z_span<T>(pair.depth()) * c_clip[2];
-    const T floor = T(64) * std::numeric_limits<T>::epsilon();
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * detail::dot<T>(inv.c[2], inv.c[2]) * length_squared)) {
+    const T floor = T(64) * std::numeric_limits<T>::epsilon() * std::sqrt(detail::dot<T>(inv.c[2], inv.c[2]));
+    if (!(eye_side > floor)) {
         return mirror_reference(pair, plane);
     }
-    const T two_over_n2 = T(2) / length_squared;
-    const V4<T> n{p[0], p[1], p[2], T(0)};
+    // reflect() of the unit plane, as the reference form does it (it
+    // normalizes the plane it is given once more: the same bits).
+    const T unit_length_squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    const V4<T> c = p * (T(1) / std::sqrt(unit_length_squared));
+    const V4<T> n{c[0], c[1], c[2], T(0)};
     const V4<T> m_n = detail::mat_vec(m, n);
-    const V4<T> f_p = two_over_n2 * p, f_p_inv = two_over_n2 * p_inv;
+    const V4<T> two_c = T(2) * c, two_c_inv = T(2) * detail::dots(detail::transpose(inv), c);
     detail::Cols<T> reflected, reflected_inv;
     for (int j = 0; j < 4; ++j) {
-        reflected.c[j] = m.c[j] - f_p[j] * m_n;
-        reflected_inv.c[j] = inv.c[j] - f_p_inv[j] * n;
+        reflected.c[j] = m.c[j] - two_c[j] * m_n;
+        reflected_inv.c[j] = inv.c[j] - two_c_inv[j] * n;
     }
     const V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
     return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, m_row3, T(-1), pair.depth(),

@@ -103,16 +103,18 @@ FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& p
 
 } // namespace
 
-// The fast form: the plane as given (the clip is invariant under its scale,
-// so it is not normalized), c' = M^-T p, then detail::clip_columns.
+// The fast form: the unit plane p, c' = M^-T p, then detail::clip_columns.
 template <class T>
 Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
-    if (!detail::plane_usable(plane.abcd, detail::normal_length_squared(plane.abcd))) {
+    const T length_squared = detail::normal_length_squared(plane.abcd);
+    if (!detail::plane_usable(plane.abcd, length_squared)) {
         return detail::plane_error(plane.abcd, "clip_oblique");
     }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    const detail::V4<T> p = detail::load(plane.abcd);
+    // Normalized although the clip is scale-invariant: the unit plane gives
+    // the reference form's bits (and its accuracy table) exactly.
+    const detail::V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared));
     const detail::V4<T> c_clip = detail::dots(detail::transpose(inv), p);
     const detail::V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
     return detail::clip_columns(m, inv, p, c_clip, inv, m_row3, T(1), pair.depth(), detail::PairFactory::traits(pair),

@@ -124,9 +124,9 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 // src/oblique_clip.cpp and mirror.cpp), which refuses with the error text
 // or, at a rounding boundary of a check, gives the result.
 //
-// One division for k and 1 / X_2: with a = (z_f - z_n) (m3 . Q) and
-// b = c . Q, k (z_f - z_n) = a / b and X_2 = (a / b) c'_z, so g = 1 / (a b c'_z)
-// gives both: (z_f - z_n) k = a a c'_z g and 1 / X_2 = b b g.
+// (Forming k and 1 / X_2 from one division, g = 1 / (a b c'_z) with
+// a = (z_f - z_n)(m3 . Q), b = c . Q, was measured: 15% higher mean error,
+// so the two divisions stay.)
 template <class T, class Slow>
 FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Cols<T>& inv, const V4<T>& p,
                                                       const V4<T>& c_clip, const Cols<T>& k_inverse,
@@ -150,15 +150,11 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Co
     const V4<T> big_q = mat_vec(k_inverse, q);
     const T a = span * (k_sign * dot<T>(k_row3, big_q));
     const T b = dot<T>(p, big_q);
-    const T denominator = a * b * c_clip[2];
     if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
-          std::isnormal(denominator))) {
+          std::isnormal(b) && std::isnormal(a * c_clip[2]))) {
         return slow();
     }
-    const T g = T(1) / denominator;
-    const T span_k = a * a * c_clip[2] * g;
-    const T inv_x2 = b * b * g;
-
+    const T span_k = a / b;
     // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
     // column j. T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
     // column j - (X_j / X_2) column 2.
@@ -170,6 +166,7 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Co
         return store<T>(out);
     };
     const V4<T> x = span_k * c_clip + V4<T>{T(0), T(0), T(0), z_near};
+    const T inv_x2 = T(1) / x[2];
     const V4<T> x_over_x2 = x * inv_x2;
     return PairFactory::keep_sign_result<T>(
         column(0), column(1), column(2), column(3), store<T>(inv.c[0] - x_over_x2[0] * inv.c[2]),
