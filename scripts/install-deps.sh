@@ -18,7 +18,7 @@ packages=(
 for flag in "$@"; do
   case "$flag" in
     --window) packages+=(xvfb x11-apps imagemagick) ;;
-    --bench) packages+=(gnuplot-nox) ;; # scripts/plot-bench.sh
+    --bench) packages+=(gnuplot-nox libeigen3-dev) ;; # scripts/plot-bench.sh; Eigen: a baseline in bench_ops
   esac
 done
 

@@ -1,89 +1,58 @@
 #include "frustum/crop.hpp"
 
 #include "frustum/detail/errors.hpp"
-#include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/pair_updates.hpp"
 
 #include <cmath>
 
 namespace frustum {
 
-namespace {
-
-// The clip-space map x' = sx x + tx w, y' = sy y + ty w applied to a pair:
-// rows 0 and 1 of M pick up row 3; the inverse undoes it column-wise.
-template <class T>
-MatrixPair<T> scale_offset_xy(const MatrixPair<T>& pair, T sx, T tx, T sy, T ty) {
-    // Row-wise m0' = sx m0 + tx m3, m1' = sy m1 + ty m3, done column by
-    // column (GLM is column-major: whole-column arithmetic vectorizes and
-    // avoids scattered stores).
-    const Vec4<T> scale(sx, sy, T(1), T(1));
-    const Vec4<T> offset(tx, ty, T(0), T(0));
-    Mat4<T> m;
-    for (int j = 0; j < 4; ++j) {
-        m[j] = pair.matrix()[j] * scale + pair.matrix()[j].w * offset;
-    }
-    const T inv_sx = T(1) / sx, inv_sy = T(1) / sy;
-    Mat4<T> inv = pair.inverse();
-    inv[0] = pair.inverse()[0] * inv_sx;
-    inv[1] = pair.inverse()[1] * inv_sy;
-    inv[3] = pair.inverse()[3] - (tx * inv_sx) * pair.inverse()[0] - (ty * inv_sy) * pair.inverse()[1];
-    return detail::PairFactory::keep_sign(m, inv, pair.depth(), pair.flips_winding());
-}
-
-template <class T>
-bool rect_is_valid(const CropRect<T>& r) {
-    // Every comparison is false for NaN; infinities fail the size bounds.
-    return std::isfinite(r.full_width) && std::isfinite(r.full_height) && r.full_width > T(0) &&
-           r.full_height > T(0) && r.width > T(0) && r.height > T(0) && r.x >= T(0) && r.y >= T(0) &&
-           r.x + r.width <= r.full_width && r.y + r.height <= r.full_height;
-}
-
-template <class T>
-Error rect_error(const CropRect<T>& r, const char* function) {
-    const bool sizes_ok = r.full_width > T(0) && r.full_height > T(0) && r.width > T(0) && r.height > T(0);
-    const bool finite = std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.width) &&
-                        std::isfinite(r.height) && std::isfinite(r.full_width) && std::isfinite(r.full_height);
-    return detail::error<T>(function,
-                            !finite     ? "crop rectangle must be finite"
-                            : !sizes_ok ? "crop and image sizes must be > 0"
-                                        : "crop rectangle must lie inside the image",
-                            {{"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height},
-                             {"full_width", r.full_width}, {"full_height", r.full_height}});
-}
-
-// Crop coefficients (eq. 14): x' = w x + (w - 1 - 2 X/bw) w_clip.
-template <class T>
-struct CropMap {
-    T sx, tx, sy, ty;
-};
-template <class T>
-CropMap<T> crop_map(const CropRect<T>& r) {
-    const T inv_width = T(1) / r.width, inv_height = T(1) / r.height;
-    const T w = r.full_width * inv_width;
-    const T h = r.full_height * inv_height;
-    return {w, w - T(1) - T(2) * r.x * inv_width, h, h - T(1) - T(2) * r.y * inv_height};
-}
-
-} // namespace
+using detail::crop_map;
+using detail::CropMap;
 
 template <class T>
 Result<MatrixPair<T>> crop(const MatrixPair<T>& pair, const CropRect<T>& rect) {
-    if (!rect_is_valid(rect)) {
-        return rect_error(rect, "crop");
+    if (!detail::crop_rect_is_valid(rect)) {
+        return detail::crop_rect_error(rect, "crop");
     }
     const CropMap<T> c = crop_map(rect);
-    return scale_offset_xy(pair, c.sx, c.tx, c.sy, c.ty);
+    return detail::scale_offset_xy(pair, c.sx, c.tx, c.sy, c.ty);
 }
 
 template <class T>
 Result<MatrixPair<T>> uncrop(const MatrixPair<T>& pair, const CropRect<T>& rect) {
-    if (!rect_is_valid(rect)) {
-        return rect_error(rect, "uncrop");
+    if (!detail::crop_rect_is_valid(rect)) {
+        return detail::crop_rect_error(rect, "uncrop");
     }
     // invCropMat of eq. 14: x = (x' - t w) / s.
     const CropMap<T> c = crop_map(rect);
-    return scale_offset_xy(pair, T(1) / c.sx, -c.tx / c.sx, T(1) / c.sy, -c.ty / c.sy);
+    return detail::scale_offset_xy(pair, T(1) / c.sx, -c.tx / c.sx, T(1) / c.sy, -c.ty / c.sy);
 }
+
+namespace {
+
+// What one column of tiles shares: row 0 of M' and columns 0 and 3 (its
+// first term) of the inverse; one row of tiles likewise row 1 of M' and the
+// term of column 1. The same expressions as detail::scale_offset_xy, in the
+// same order, so every tile has the bits crop() gives it.
+template <class T>
+struct TileColumn {
+    Vec4<T> row0; // entry j: row 0 of column j of M'
+    Vec4<T> inv0, inv3_partial;
+    int x0, width;
+};
+template <class T>
+struct TileRow {
+    Vec4<T> row1;
+    Vec4<T> inv1, inv3_term;
+    int y0, height;
+};
+
+int tile_edge(int i, int size, int count) {
+    return static_cast<int>(static_cast<long long>(i) * size / count);
+}
+
+} // namespace
 
 template <class T>
 Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns,
@@ -93,18 +62,59 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
                                 {{"width_px", T(width_px)}, {"height_px", T(height_px)},
                                  {"columns", T(columns)}, {"rows", T(rows)}});
     }
+    const Mat4<T>& m = pair.matrix();
+    const Mat4<T>& inv = pair.inverse();
+    // Batched (issue 14): the per-axis crop maps are computed once per
+    // column and once per row of tiles; a tile only assembles its columns.
+    std::vector<TileColumn<T>> tile_columns(static_cast<std::size_t>(columns));
+    for (int c = 0; c < columns; ++c) {
+        const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
+        const CropMap<T> map = crop_map(CropRect<T>{T(x0), T(0), T(x1 - x0), T(1), T(width_px), T(1)});
+        const T inv_sx = T(1) / map.sx;
+        TileColumn<T>& out = tile_columns[static_cast<std::size_t>(c)];
+        for (int j = 0; j < 4; ++j) {
+            out.row0[j] = m[j].x * map.sx + m[j].w * map.tx;
+        }
+        out.inv0 = inv[0] * inv_sx;
+        out.inv3_partial = inv[3] - (map.tx * inv_sx) * inv[0];
+        out.x0 = x0;
+        out.width = x1 - x0;
+    }
+    std::vector<TileRow<T>> tile_rows(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r) {
+        const int y0 = tile_edge(r, height_px, rows), y1 = tile_edge(r + 1, height_px, rows);
+        const CropMap<T> map = crop_map(CropRect<T>{T(0), T(y0), T(1), T(y1 - y0), T(1), T(height_px)});
+        const T inv_sy = T(1) / map.sy;
+        TileRow<T>& out = tile_rows[static_cast<std::size_t>(r)];
+        for (int j = 0; j < 4; ++j) {
+            out.row1[j] = m[j].y * map.sy + m[j].w * map.ty;
+        }
+        out.inv1 = inv[1] * inv_sy;
+        out.inv3_term = (map.ty * inv_sy) * inv[1];
+        out.y0 = y0;
+        out.height = y1 - y0;
+    }
+    // Rows 2 and 3 of M' and column 2 of the inverse are every tile's:
+    // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0 as crop() forms them.
+    Vec4<T> row2, row3;
+    for (int j = 0; j < 4; ++j) {
+        row2[j] = m[j].z * T(1) + m[j].w * T(0);
+        row3[j] = m[j].w * T(1) + m[j].w * T(0);
+    }
+    const unsigned traits = detail::PairFactory::traits(pair);
+
     std::vector<Tile<T>> tiles;
     tiles.reserve(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
-    const auto edge = [](int i, int size, int count) {
-        return static_cast<int>(static_cast<long long>(i) * size / count);
-    };
     for (int r = 0; r < rows; ++r) {
-        const int y0 = edge(r, height_px, rows), y1 = edge(r + 1, height_px, rows);
+        const TileRow<T>& tr = tile_rows[static_cast<std::size_t>(r)];
         for (int c = 0; c < columns; ++c) {
-            const int x0 = edge(c, width_px, columns), x1 = edge(c + 1, width_px, columns);
-            const CropRect<T> rect{T(x0), T(y0), T(x1 - x0), T(y1 - y0), T(width_px), T(height_px)};
-            const CropMap<T> m = crop_map(rect);
-            tiles.push_back(Tile<T>{c, r, x0, y0, x1 - x0, y1 - y0, scale_offset_xy(pair, m.sx, m.tx, m.sy, m.ty)});
+            const TileColumn<T>& tc = tile_columns[static_cast<std::size_t>(c)];
+            tiles.push_back(Tile<T>{
+                c, r, tc.x0, tr.y0, tc.width, tr.height,
+                detail::PairFactory::keep_sign_columns<T>(
+                    Vec4<T>(tc.row0[0], tr.row1[0], row2[0], row3[0]), Vec4<T>(tc.row0[1], tr.row1[1], row2[1], row3[1]),
+                    Vec4<T>(tc.row0[2], tr.row1[2], row2[2], row3[2]), Vec4<T>(tc.row0[3], tr.row1[3], row2[3], row3[3]),
+                    tc.inv0, tr.inv1, inv[2], tc.inv3_partial - tr.inv3_term, traits)});
         }
     }
     return tiles;

@@ -2,6 +2,7 @@
 
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
+#include "frustum/detail/pair_updates.hpp"
 #include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
@@ -12,8 +13,13 @@
 
 namespace frustum {
 
+namespace {
+
+// The normalized reference form (reflect, then the clip core with the unit
+// plane). Only reached when a check of the fast form below fails: it gives
+// the refusal and its text, or the result at a check's rounding boundary.
 template <class T>
-Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
+FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "mirror");
     if (!unit) {
         return Error{unit.error()};
@@ -43,6 +49,48 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
         return Error{clipped.error()};
     }
     return clipped;
+}
+
+} // namespace
+
+// The fast form: the reference form's arithmetic in one inlined pass. The
+// reflected columns go straight to the clip step, with c' = -(M^-T c), Q and
+// m3 . Q from the unreflected pair (oblique_clip_core.hpp). (Reflecting with
+// 2 / |n|^2 instead of normalizing twice was measured: a few % higher mean
+// and p99.9 error in some depth ranges, so the reference's bits are kept.)
+template <class T>
+Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
+    using detail::V4;
+    const T length_squared = detail::normal_length_squared(plane.abcd);
+    if (!detail::plane_usable(plane.abcd, length_squared)) {
+        return detail::plane_error(plane.abcd, "mirror");
+    }
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
+    const V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared)); // unit
+    const V4<T> c_clip = -detail::dots(detail::transpose(inv), p);
+    // The real eye in front of the mirror: eye_side > 64 eps |inv_2|.
+    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip[2];
+    const T floor = T(64) * std::numeric_limits<T>::epsilon() * std::sqrt(detail::dot<T>(inv.c[2], inv.c[2]));
+    if (!(eye_side > floor)) {
+        return mirror_reference(pair, plane);
+    }
+    // reflect() of the unit plane, as the reference form does it (it
+    // normalizes the plane it is given once more: the same bits).
+    const T unit_length_squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    const V4<T> c = p * (T(1) / std::sqrt(unit_length_squared));
+    const V4<T> n{c[0], c[1], c[2], T(0)};
+    const V4<T> m_n = detail::mat_vec(m, n);
+    const V4<T> two_c = T(2) * c, two_c_inv = T(2) * detail::dots(detail::transpose(inv), c);
+    detail::Cols<T> reflected, reflected_inv;
+    for (int j = 0; j < 4; ++j) {
+        reflected.c[j] = m.c[j] - two_c[j] * m_n;
+        reflected_inv.c[j] = inv.c[j] - two_c_inv[j] * n;
+    }
+    const V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, m_row3, T(-1), pair.depth(),
+                                detail::PairFactory::flipped_traits(pair),
+                                [&] { return mirror_reference(pair, plane); });
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/pair_updates.hpp"
 #include "frustum/reflect.hpp"
 
 #include <cmath>
@@ -81,8 +82,14 @@ template Result<MatrixPair<double>> clip_oblique_in_clip_space(const MatrixPair<
 
 } // namespace detail
 
+namespace {
+
+// The normalized reference form: the unit plane, then the core above. Only
+// reached when a check of the fast form fails (detail::clip_columns): it
+// gives the refusal and its text, or the result at a check's rounding
+// boundary.
 template <class T>
-Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
+FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "clip_oblique");
     if (!unit) {
         return Error{unit.error()};
@@ -92,6 +99,26 @@ Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& pl
     const Mat4<T>& inv = pair.inverse();
     const Vec4<T> c_clip(glm::dot(c, inv[0]), glm::dot(c, inv[1]), glm::dot(c, inv[2]), glm::dot(c, inv[3]));
     return detail::clip_oblique_in_clip_space(pair, c, c_clip, pair, T(1), "clip_oblique");
+}
+
+} // namespace
+
+// The fast form: the unit plane p, c' = M^-T p, then detail::clip_columns.
+template <class T>
+Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
+    const T length_squared = detail::normal_length_squared(plane.abcd);
+    if (!detail::plane_usable(plane.abcd, length_squared)) {
+        return detail::plane_error(plane.abcd, "clip_oblique");
+    }
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
+    // Normalized although the clip is scale-invariant: the unit plane gives
+    // the reference form's bits (and its accuracy table) exactly.
+    const detail::V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared));
+    const detail::V4<T> c_clip = detail::dots(detail::transpose(inv), p);
+    const detail::V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    return detail::clip_columns(m, inv, p, c_clip, inv, m_row3, T(1), pair.depth(), detail::PairFactory::traits(pair),
+                                [&] { return clip_oblique_reference(pair, plane); });
 }
 
 template Result<MatrixPair<float>> clip_oblique(const MatrixPair<float>&, const Plane<float>&);

@@ -1,152 +1,285 @@
-// Speed of the analytic matrix-pair updates (paper §5.1-5.3) against the
-// baseline "build the new matrix + glm::inverse", side by side in one run,
-// in float. Each iteration walks a ring of 1024 random cases so the branch
-// predictor and cache see realistic variety.
+// Speed of the analytic matrix-pair updates (paper §5.1-5.4) against two
+// baselines, side by side in one run: "build the new matrix + glm::inverse"
+// and "build the new matrix + Eigen's Matrix4 inverse", in float and in
+// double. Each iteration walks a ring of 1024 random cases (camera, mirror
+// plane, rectangle, crop rectangle) so that branch predictor and cache see
+// realistic variety and nothing folds to a constant; the ring index wraps
+// with a power-of-two mask (a `%` costs a 64-bit division per call).
 //
 //   bench_ops --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// Batched benchmarks (crop_tiles, lens_tiles) report `per_tile`: seconds per
+// tile (Google Benchmark prints it in ns when it is small enough).
+#include "eigen_inverse.hpp"
 #include "random_cases.hpp"
 #include "reinvert.hpp"
 
+#include <frustum/detail/plane_intersection.hpp>
+
 #include <benchmark/benchmark.h>
+
+#include <cstdint>
 
 namespace {
 
+using frustum::CropRect;
 using frustum::DepthRange;
 using frustum::MatrixPair;
 using frustum::Plane;
 
-constexpr int ring_size = 1024;
+constexpr std::size_t ring_size = 1024; // a power of two: see `ring_mask`
+constexpr std::size_t ring_mask = ring_size - 1;
+static_assert((ring_size & ring_mask) == 0, "ring_size must be a power of two");
 
-struct FloatCase {
-    MatrixPair<float> camera;
-    bench::RawPair<float> raw_camera;
-    Plane<float> plane; // unit; the eye is on its positive side
-    frustum::Rectangle<float> rectangle;
-    glm::vec3 eye;
+template <class T>
+struct Case {
+    MatrixPair<T> camera;
+    bench::RawPair<T> raw_camera;
+    Plane<T> plane; // unit; the eye is on its positive side
+    frustum::Rectangle<T> rectangle;
+    frustum::Vec3<T> eye;
+    CropRect<T> crop;       // a random sub-rectangle of a 1280 x 720 image
+    CropRect<T> chain_crop; // the same in a unit image (repeated crops stay sane)
 };
 
-const std::vector<FloatCase>& cases() {
-    static const std::vector<FloatCase> ring = [] {
-        std::vector<FloatCase> out;
-        for (const auto& c : bench::make_mirror_cases(ring_size, DepthRange::ZeroToOne, 99u)) {
-            const auto camera = c.camera.cast<float>();
-            out.push_back(FloatCase{camera, bench::raw(camera),
-                                    Plane<float>(glm::vec4(c.mirror_plane.normalized().abcd)),
-                                    {glm::vec3(c.rectangle.corner), glm::vec3(c.rectangle.a1), glm::vec3(c.rectangle.a2)},
-                                    glm::vec3(c.eye)});
+// A random rectangle inside a 1280 x 720 image, whole pixels.
+CropRect<double> random_rect(std::uint32_t& state) {
+    const auto next = [&state](int range) {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<int>((state >> 8) % static_cast<std::uint32_t>(range));
+    };
+    const double width = 160 + next(800), height = 90 + next(500);
+    const double x = next(static_cast<int>(1280 - width)), y = next(static_cast<int>(720 - height));
+    return {x, y, width, height, 1280, 720};
+}
+
+template <class T>
+const std::vector<Case<T>>& cases() {
+    static const std::vector<Case<T>> ring = [] {
+        std::vector<Case<T>> out;
+        std::uint32_t state = 7u;
+        for (const auto& c : bench::make_mirror_cases(static_cast<int>(ring_size), DepthRange::ZeroToOne, 99u)) {
+            const auto camera = c.camera.template cast<T>();
+            const CropRect<double> r = random_rect(state);
+            const CropRect<T> crop{T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
+            // A milder crop for the chain: the middle 80-95% of the image.
+            const CropRect<T> chain{T(r.x / 1280 * 0.1), T(r.y / 720 * 0.1), T(0.8 + r.width / 1280 * 0.1),
+                                    T(0.8 + r.height / 720 * 0.1), T(1), T(1)};
+            out.push_back(Case<T>{camera, bench::raw(camera), Plane<T>(frustum::Vec4<T>(c.mirror_plane.normalized().abcd)),
+                                  {frustum::Vec3<T>(c.rectangle.corner), frustum::Vec3<T>(c.rectangle.a1),
+                                   frustum::Vec3<T>(c.rectangle.a2)},
+                                  frustum::Vec3<T>(c.eye), crop, chain});
         }
         return out;
     }();
     return ring;
 }
 
-const frustum::CropRect<float> crop_rect{100, 50, 320, 180, 1280, 720};
-
-template <class F>
+template <class T, class F>
 void run(benchmark::State& state, F&& op) {
-    const auto& ring = cases();
+    const auto& ring = cases<T>();
     std::size_t i = 0;
     for (auto _ : state) {
         auto result = op(ring[i]);
         benchmark::DoNotOptimize(result);
-        i = (i + 1) % ring.size();
+        i = (i + 1) & ring_mask;
     }
 }
 
-void Crop_Analytic(benchmark::State& s) { run(s, [](const FloatCase& c) { return frustum::crop(c.camera, crop_rect); }); }
-void Crop_Reinvert(benchmark::State& s) { run(s, [](const FloatCase& c) { return bench::crop_reinvert(c.raw_camera, crop_rect); }); }
-void Reflect_Analytic(benchmark::State& s) { run(s, [](const FloatCase& c) { return frustum::reflect(c.camera, c.plane); }); }
-void Reflect_Reinvert(benchmark::State& s) { run(s, [](const FloatCase& c) { return bench::reflect_reinvert(c.raw_camera, c.plane); }); }
-void Clip_Analytic(benchmark::State& s) {
-    run(s, [](const FloatCase& c) { return frustum::clip_oblique(c.camera, c.plane.flipped()); });
+// ---- single operations: analytic, + glm::inverse, + Eigen inverse ----
+
+template <class T, class Inverse>
+void crop_reinvert(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return bench::crop_reinvert(c.raw_camera, c.crop, Inverse{}); });
 }
-void Clip_Reinvert(benchmark::State& s) {
-    run(s, [](const FloatCase& c) { return bench::clip_reinvert(c.raw_camera, c.plane.flipped(), DepthRange::ZeroToOne); });
+template <class T, class Inverse>
+void reflect_reinvert(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return bench::reflect_reinvert(c.raw_camera, c.plane, Inverse{}); });
 }
-void Mirror_Analytic(benchmark::State& s) { run(s, [](const FloatCase& c) { return frustum::mirror(c.camera, c.plane); }); }
-void Mirror_Reinvert(benchmark::State& s) {
-    run(s, [](const FloatCase& c) { return bench::mirror_reinvert(c.raw_camera, c.plane, DepthRange::ZeroToOne); });
-}
-void MirrorRectangle_Analytic(benchmark::State& s) {
-    run(s, [](const FloatCase& c) {
-        return frustum::mirror_rectangle(c.rectangle, c.eye, 100.0f, frustum::MirrorFit::Exact, DepthRange::ZeroToOne);
+template <class T, class Inverse>
+void clip_reinvert(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) {
+        return bench::clip_reinvert(c.raw_camera, c.plane.flipped(), DepthRange::ZeroToOne, Inverse{});
     });
 }
-// The same construction, then glm::inverse of its matrix (this also pays for
-// the closed-form inverse it discards, a few multiplies: the ratio is a
-// slight overestimate of the saving).
-void MirrorRectangle_Reinvert(benchmark::State& s) {
-    run(s, [](const FloatCase& c) {
-        const auto pair = frustum::mirror_rectangle(c.rectangle, c.eye, 100.0f, frustum::MirrorFit::Exact,
-                                                    DepthRange::ZeroToOne);
-        return glm::inverse(pair->matrix());
+template <class T, class Inverse>
+void mirror_reinvert(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) {
+        return bench::mirror_reinvert(c.raw_camera, c.plane, DepthRange::ZeroToOne, Inverse{});
     });
 }
 
-const Plane<float> tilt_a = Plane<float>(0.6f, 0.8f, 0.0f, -1.0f);
-const Plane<float> tilt_b = Plane<float>(0.0f, 0.28f, 0.96f, 2.0f);
-const frustum::CropRect<float> chain_rect{0.1f, 0.2f, 0.8f, 0.7f, 1.0f, 1.0f};
+template <class T>
+void Crop_Analytic(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return frustum::crop(c.camera, c.crop); });
+}
+template <class T>
+void Reflect_Analytic(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return frustum::reflect(c.camera, c.plane); });
+}
+template <class T>
+void Clip_Analytic(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return frustum::clip_oblique(c.camera, c.plane.flipped()); });
+}
+template <class T>
+void Mirror_Analytic(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return frustum::mirror(c.camera, c.plane); });
+}
+template <class T>
+void MirrorRectangle_Analytic(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) {
+        return frustum::mirror_rectangle(c.rectangle, c.eye, T(100), frustum::MirrorFit::Exact, DepthRange::ZeroToOne);
+    });
+}
+// The same construction, then the baseline's inverse of its matrix (this
+// also pays for the closed-form inverse it discards, a few multiplies: the
+// ratio is a slight overestimate of the saving).
+template <class T, class Inverse>
+void mirror_rectangle_reinvert(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) {
+        const auto pair = frustum::mirror_rectangle(c.rectangle, c.eye, T(100), frustum::MirrorFit::Exact,
+                                                    DepthRange::ZeroToOne);
+        return Inverse{}(pair->matrix());
+    });
+}
+
+const Plane<double> tilt_a(0.6, 0.8, 0.0, -1.0);
+const Plane<double> tilt_b(0.0, 0.28, 0.96, 2.0);
 
 // mirror, then crop and reflect alternating: 16 operations, both matrices
 // kept current after every step.
+template <class T>
 void Chain16_Analytic(benchmark::State& s) {
-    run(s, [](const FloatCase& c) {
-        MatrixPair<float> p = *frustum::mirror(c.camera, c.plane);
+    const Plane<T> a(frustum::Vec4<T>(tilt_a.abcd)), b(frustum::Vec4<T>(tilt_b.abcd));
+    run<T>(s, [&](const Case<T>& c) {
+        MatrixPair<T> p = *frustum::mirror(c.camera, c.plane);
         for (int i = 0; i < 15; ++i) {
-            p = (i % 2 == 0) ? *frustum::crop(p, chain_rect) : *frustum::reflect(p, i % 4 == 1 ? tilt_a : tilt_b);
+            p = (i % 2 == 0) ? *frustum::crop(p, c.chain_crop) : *frustum::reflect(p, i % 4 == 1 ? a : b);
         }
         return p;
     });
 }
-void Chain16_Reinvert(benchmark::State& s) {
-    run(s, [](const FloatCase& c) {
-        bench::RawPair<float> p = bench::mirror_reinvert(c.raw_camera, c.plane, DepthRange::ZeroToOne);
+template <class T, class Inverse>
+void chain16_reinvert(benchmark::State& s) {
+    const Plane<T> a(frustum::Vec4<T>(tilt_a.abcd)), b(frustum::Vec4<T>(tilt_b.abcd));
+    run<T>(s, [&](const Case<T>& c) {
+        bench::RawPair<T> p = bench::mirror_reinvert(c.raw_camera, c.plane, DepthRange::ZeroToOne, Inverse{});
         for (int i = 0; i < 15; ++i) {
-            p = (i % 2 == 0) ? bench::crop_reinvert(p, chain_rect) : bench::reflect_reinvert(p, i % 4 == 1 ? tilt_a : tilt_b);
+            p = (i % 2 == 0) ? bench::crop_reinvert(p, c.chain_crop, Inverse{})
+                             : bench::reflect_reinvert(p, i % 4 == 1 ? a : b, Inverse{});
         }
         return p;
     });
 }
-// Diagnostic: the analytic clip formulas alone, no checks, no Result.
-void Clip_RawMath(benchmark::State& s) {
-    run(s, [](const FloatCase& c) {
-        const auto& inv = c.raw_camera.inverse;
-        const glm::vec4 p = -c.plane.abcd;
-        const glm::vec4 cc(glm::dot(p, inv[0]), glm::dot(p, inv[1]), glm::dot(p, inv[2]), glm::dot(p, inv[3]));
-        const glm::vec4 q(cc.x >= 0 ? 1.f : -1.f, cc.y >= 0 ? 1.f : -1.f, 1.f, 1.f);
-        const float k = 1.0f / glm::dot(cc, q);
-        bench::RawPair<float> out = c.raw_camera;
-        for (int j = 0; j < 4; ++j) out.matrix[j].z = k * p[j];
-        const float inv_x2 = 1.0f / (k * cc.z);
-        out.inverse[0] = inv[0] - (k * cc.x * inv_x2) * inv[2];
-        out.inverse[1] = inv[1] - (k * cc.y * inv_x2) * inv[2];
-        out.inverse[3] = inv[3] - (k * cc.w * inv_x2) * inv[2];
-        out.inverse[2] = inv[2] * inv_x2;
-        return out;
-    });
-}
+
+// ---- reference points ----
+
 // The harness and the Result wrapper alone: copy a pair into a Result.
+template <class T>
 void CopyPair_Only(benchmark::State& s) {
-    run(s, [](const FloatCase& c) { return frustum::Result<MatrixPair<float>>(c.camera); });
+    run<T>(s, [](const Case<T>& c) { return frustum::Result<MatrixPair<T>>(c.camera); });
 }
-// Baseline of the baseline: glm::inverse alone.
-void GlmInverse_Only(benchmark::State& s) { run(s, [](const FloatCase& c) { return glm::inverse(c.raw_camera.matrix); }); }
+template <class T, class Inverse>
+void inverse_only(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return Inverse{}(c.raw_camera.matrix); });
+}
+
+// ---- batched: crop_tiles and lens_tiles, per tile ----
+
+void per_tile(benchmark::State& s, int tiles) {
+    s.counters["per_tile"] =
+        benchmark::Counter(static_cast<double>(tiles), benchmark::Counter::kIsIterationInvariantRate |
+                                                           benchmark::Counter::kInvert);
+}
+
+// All G x G tiles of a 1280 x 720 image.
+template <class T>
+void CropTiles_Analytic(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    run<T>(s, [g](const Case<T>& c) { return frustum::crop_tiles(c.camera, 1280, 720, g, g); });
+    per_tile(s, g * g);
+}
+// Per tile: its crop rectangle, the new matrix (eq. 14), glm::inverse; the
+// tiles go into a vector like crop_tiles' result.
+template <class T, class Inverse>
+void crop_tiles_reinvert(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    std::vector<bench::RawPair<T>> out(static_cast<std::size_t>(g * g));
+    run<T>(s, [g, &out](const Case<T>& c) {
+        const auto edge = [](int i, int size, int count) { return (i * size) / count; };
+        std::size_t t = 0;
+        for (int r = 0; r < g; ++r) {
+            const int y0 = edge(r, 720, g), y1 = edge(r + 1, 720, g);
+            for (int col = 0; col < g; ++col) {
+                const int x0 = edge(col, 1280, g), x1 = edge(col + 1, 1280, g);
+                const CropRect<T> rect{T(x0), T(y0), T(x1 - x0), T(y1 - y0), T(1280), T(720)};
+                out[t++] = bench::crop_reinvert(c.raw_camera, rect, Inverse{});
+            }
+        }
+        benchmark::ClobberMemory();
+        return out.data();
+    });
+    per_tile(s, g * g);
+}
+
+template <class T>
+frustum::Lens<T> bench_lens() {
+    frustum::Lens<T> lens;
+    lens.center_m = frustum::Vec2<T>(T(0.01), T(-0.005));
+    lens.radius_m = T(0.03);
+    lens.power = T(1.5);
+    return lens;
+}
+// The lens camera of the ring: the case camera (perspective, finite far).
+template <class T>
+void LensTiles_Analytic(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    const auto lens = bench_lens<T>();
+    run<T>(s, [g, &lens](const Case<T>& c) { return frustum::lens_tiles(c.camera, lens, 1280, 720, g, g); });
+    per_tile(s, g * g);
+}
+// What a tile's analytic inverse costs inside lens_tiles (§4: rows to
+// inverse by plane intersections) against inverting the same matrix: the
+// baseline per tile is LensTiles_Analytic - InverseFromRows + GlmInverse.
+template <class T>
+void InverseFromRows_Only(benchmark::State& s) {
+    run<T>(s, [](const Case<T>& c) { return frustum::detail::inverse_from_rows(c.raw_camera.matrix); });
+}
 
 } // namespace
 
-BENCHMARK(Crop_Analytic);
-BENCHMARK(Crop_Reinvert);
-BENCHMARK(Reflect_Analytic);
-BENCHMARK(Reflect_Reinvert);
-BENCHMARK(Clip_Analytic);
-BENCHMARK(Clip_Reinvert);
-BENCHMARK(Mirror_Analytic);
-BENCHMARK(Mirror_Reinvert);
-BENCHMARK(MirrorRectangle_Analytic);
-BENCHMARK(MirrorRectangle_Reinvert);
-BENCHMARK(Chain16_Analytic);
-BENCHMARK(Chain16_Reinvert);
-BENCHMARK(GlmInverse_Only);
-BENCHMARK(CopyPair_Only);
-BENCHMARK(Clip_RawMath);
+#define FRUSTUM_BENCH_OPS(T)                                                                         \
+    BENCHMARK_TEMPLATE(Crop_Analytic, T);                                                            \
+    BENCHMARK_TEMPLATE(crop_reinvert, T, bench::GlmInverse)->Name("Crop_Reinvert<" #T ">");          \
+    BENCHMARK_TEMPLATE(crop_reinvert, T, bench::EigenInverse)->Name("Crop_Eigen<" #T ">");           \
+    BENCHMARK_TEMPLATE(Reflect_Analytic, T);                                                         \
+    BENCHMARK_TEMPLATE(reflect_reinvert, T, bench::GlmInverse)->Name("Reflect_Reinvert<" #T ">");    \
+    BENCHMARK_TEMPLATE(reflect_reinvert, T, bench::EigenInverse)->Name("Reflect_Eigen<" #T ">");     \
+    BENCHMARK_TEMPLATE(Clip_Analytic, T);                                                            \
+    BENCHMARK_TEMPLATE(clip_reinvert, T, bench::GlmInverse)->Name("Clip_Reinvert<" #T ">");          \
+    BENCHMARK_TEMPLATE(clip_reinvert, T, bench::EigenInverse)->Name("Clip_Eigen<" #T ">");           \
+    BENCHMARK_TEMPLATE(Mirror_Analytic, T);                                                          \
+    BENCHMARK_TEMPLATE(mirror_reinvert, T, bench::GlmInverse)->Name("Mirror_Reinvert<" #T ">");      \
+    BENCHMARK_TEMPLATE(mirror_reinvert, T, bench::EigenInverse)->Name("Mirror_Eigen<" #T ">");       \
+    BENCHMARK_TEMPLATE(MirrorRectangle_Analytic, T);                                                 \
+    BENCHMARK_TEMPLATE(mirror_rectangle_reinvert, T, bench::GlmInverse)                              \
+        ->Name("MirrorRectangle_Reinvert<" #T ">");                                                  \
+    BENCHMARK_TEMPLATE(mirror_rectangle_reinvert, T, bench::EigenInverse)                            \
+        ->Name("MirrorRectangle_Eigen<" #T ">");                                                     \
+    BENCHMARK_TEMPLATE(Chain16_Analytic, T);                                                         \
+    BENCHMARK_TEMPLATE(chain16_reinvert, T, bench::GlmInverse)->Name("Chain16_Reinvert<" #T ">");    \
+    BENCHMARK_TEMPLATE(chain16_reinvert, T, bench::EigenInverse)->Name("Chain16_Eigen<" #T ">");     \
+    BENCHMARK_TEMPLATE(inverse_only, T, bench::GlmInverse)->Name("GlmInverse_Only<" #T ">");         \
+    BENCHMARK_TEMPLATE(inverse_only, T, bench::EigenInverse)->Name("EigenInverse_Only<" #T ">");     \
+    BENCHMARK_TEMPLATE(InverseFromRows_Only, T);                                                     \
+    BENCHMARK_TEMPLATE(CopyPair_Only, T);                                                            \
+    BENCHMARK_TEMPLATE(CropTiles_Analytic, T)->Arg(16)->Arg(32);                                     \
+    BENCHMARK_TEMPLATE(crop_tiles_reinvert, T, bench::GlmInverse)                                    \
+        ->Name("CropTiles_Reinvert<" #T ">")->Arg(16)->Arg(32);                                      \
+    BENCHMARK_TEMPLATE(crop_tiles_reinvert, T, bench::EigenInverse)                                  \
+        ->Name("CropTiles_Eigen<" #T ">")->Arg(16)->Arg(32);                                         \
+    BENCHMARK_TEMPLATE(LensTiles_Analytic, T)->Arg(4)->Arg(16)->Arg(32);
+
+FRUSTUM_BENCH_OPS(float)
+FRUSTUM_BENCH_OPS(double)
 BENCHMARK_MAIN();

@@ -8,6 +8,15 @@
 
 namespace bench {
 
+// The inversion of the baseline: glm::inverse (the default), or another
+// library's (eigen_inverse.hpp) in the speed benchmark.
+struct GlmInverse {
+    template <class T>
+    frustum::Mat4<T> operator()(const frustum::Mat4<T>& m) const {
+        return glm::inverse(m);
+    }
+};
+
 template <class T>
 struct RawPair {
     frustum::Mat4<T> matrix, inverse;
@@ -19,21 +28,21 @@ RawPair<T> raw(const frustum::MatrixPair<T>& pair) {
 }
 
 // eq. 14: rows 0 and 1 pick up row 3.
-template <class T>
-RawPair<T> crop_reinvert(const RawPair<T>& p, const frustum::CropRect<T>& r) {
+template <class T, class Inverse = GlmInverse>
+RawPair<T> crop_reinvert(const RawPair<T>& p, const frustum::CropRect<T>& r, Inverse inverse = {}) {
     const T w = r.full_width / r.width, h = r.full_height / r.height;
     frustum::Mat4<T> m = p.matrix;
     const frustum::Vec4<T> m3 = frustum::row(m, 3);
     frustum::set_row(m, 0, w * frustum::row(m, 0) + (w - T(1) - T(2) * r.x / r.width) * m3);
     frustum::set_row(m, 1, h * frustum::row(m, 1) + (h - T(1) - T(2) * r.y / r.height) * m3);
-    return {m, glm::inverse(m)};
+    return {m, inverse(m)};
 }
 
 // eq. 16: M R for a unit plane.
-template <class T>
-RawPair<T> reflect_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane) {
+template <class T, class Inverse = GlmInverse>
+RawPair<T> reflect_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane, Inverse inverse = {}) {
     const frustum::Mat4<T> m = p.matrix * frustum::reflection_matrix(unit_plane);
-    return {m, glm::inverse(m)};
+    return {m, inverse(m)};
 }
 
 // §5.2 with the clip-space corner (erratum 2): the new matrix only, given
@@ -52,21 +61,23 @@ frustum::Mat4<T> clip_matrix(const frustum::Mat4<T>& matrix, const frustum::Vec4
 
 // Reads the current inverse to carry the plane into clip space, as any
 // implementation must.
-template <class T>
-RawPair<T> clip_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane, frustum::DepthRange depth) {
+template <class T, class Inverse = GlmInverse>
+RawPair<T> clip_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane, frustum::DepthRange depth,
+                         Inverse inverse = {}) {
     const frustum::Vec4<T> c_clip = glm::transpose(p.inverse) * unit_plane.abcd;
     const frustum::Mat4<T> m = clip_matrix(p.matrix, unit_plane.abcd, c_clip, depth);
-    return {m, glm::inverse(m)};
+    return {m, inverse(m)};
 }
 
 // Reflect then clip, inverting once at the end. The plane in the reflected
 // clip space needs no new inverse: (R M^-1)^T c = -(M^-T c) since R^T c = -c.
-template <class T>
-RawPair<T> mirror_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane, frustum::DepthRange depth) {
+template <class T, class Inverse = GlmInverse>
+RawPair<T> mirror_reinvert(const RawPair<T>& p, const frustum::Plane<T>& unit_plane, frustum::DepthRange depth,
+                           Inverse inverse = {}) {
     const frustum::Mat4<T> reflected = p.matrix * frustum::reflection_matrix(unit_plane);
     const frustum::Vec4<T> c_clip = -(glm::transpose(p.inverse) * unit_plane.abcd);
     const frustum::Mat4<T> m = clip_matrix(reflected, unit_plane.abcd, c_clip, depth);
-    return {m, glm::inverse(m)};
+    return {m, inverse(m)};
 }
 
 } // namespace bench

@@ -18,7 +18,14 @@ namespace frustum {
 
 namespace detail {
 struct PairFactory;
-}
+// Passkey: only PairFactory can make one, so only the library's operations
+// can use the column constructor below (a Result builds its pair in place
+// with it: no temporary, no 16-byte-at-a-time copy).
+class PairKey {
+    PairKey() {} // user-provided: no aggregate initialization from outside
+    friend struct PairFactory;
+};
+} // namespace detail
 
 template <class T>
 class MatrixPair {
@@ -40,6 +47,12 @@ public:
     template <class U>
     MatrixPair<U> cast() const;
 
+    // Internal (see detail::PairKey): a pair from its eight columns, each
+    // written with one whole-column store.
+    MatrixPair(detail::PairKey, const Vec4<T>& m0, const Vec4<T>& m1, const Vec4<T>& m2, const Vec4<T>& m3,
+               const Vec4<T>& i0, const Vec4<T>& i1, const Vec4<T>& i2, const Vec4<T>& i3, unsigned traits)
+        : matrix_(m0, m1, m2, m3), inverse_(i0, i1, i2, i3), traits_(traits) {}
+
 private:
     friend struct detail::PairFactory;
     template <class U>
@@ -49,6 +62,7 @@ private:
 
     static constexpr unsigned depth_mask = 0xffu;
     static constexpr unsigned flips_bit = 0x100u;
+    unsigned traits() const { return traits_; }
 
     Mat4<T> matrix_{1};
     Mat4<T> inverse_{1};

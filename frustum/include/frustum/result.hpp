@@ -21,6 +21,9 @@ class [[nodiscard]] Result {
 public:
     Result(T value) : state_(std::in_place_index<0>, std::move(value)) {} // NOLINT: implicit by design
     Result(Error error) : state_(std::in_place_index<1>, std::move(error)) {} // NOLINT: implicit by design
+    // The value built in place from its constructor's arguments.
+    template <class... Args>
+    explicit Result(std::in_place_t, Args&&... args) : state_(std::in_place_index<0>, std::forward<Args>(args)...) {}
 
     bool ok() const { return state_.index() == 0; }
     explicit operator bool() const { return ok(); }

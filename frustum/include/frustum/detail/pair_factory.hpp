@@ -6,6 +6,9 @@
 #pragma once
 
 #include "frustum/matrix_pair.hpp"
+#include "frustum/result.hpp"
+
+#include <utility>
 
 namespace frustum::detail {
 
@@ -35,6 +38,31 @@ struct PairFactory {
     template <class T>
     static MatrixPair<T> keep_sign(const Mat4<T>& m, const Mat4<T>& inv, DepthRange depth, bool flips_winding) {
         return MatrixPair<T>(m, inv, depth, flips_winding);
+    }
+
+    // keep_sign() for the hot operations (crop, reflect, clip, mirror): the
+    // pair is built from its columns directly inside the returned Result.
+    template <class T>
+    static Result<MatrixPair<T>> keep_sign_result(const Vec4<T>& m0, const Vec4<T>& m1, const Vec4<T>& m2,
+                                                  const Vec4<T>& m3, const Vec4<T>& i0, const Vec4<T>& i1,
+                                                  const Vec4<T>& i2, const Vec4<T>& i3, unsigned traits) {
+        return Result<MatrixPair<T>>(std::in_place, PairKey{}, m0, m1, m2, m3, i0, i1, i2, i3, traits);
+    }
+    template <class T>
+    static MatrixPair<T> keep_sign_columns(const Vec4<T>& m0, const Vec4<T>& m1, const Vec4<T>& m2,
+                                           const Vec4<T>& m3, const Vec4<T>& i0, const Vec4<T>& i1,
+                                           const Vec4<T>& i2, const Vec4<T>& i3, unsigned traits) {
+        return MatrixPair<T>(PairKey{}, m0, m1, m2, m3, i0, i1, i2, i3, traits);
+    }
+    // Depth range and winding of a pair, as one word.
+    template <class T>
+    static unsigned traits(const MatrixPair<T>& pair) {
+        return pair.traits();
+    }
+    // The same with the winding flipped (a reflection).
+    template <class T>
+    static unsigned flipped_traits(const MatrixPair<T>& pair) {
+        return pair.traits() ^ MatrixPair<T>::flips_bit;
     }
 };
 

@@ -1,0 +1,177 @@
+// The hot pair updates (crop §5.1, reflect and oblique clip §5.2), written
+// to be inlined into the public functions of src/crop.cpp, reflect.cpp,
+// oblique_clip.cpp and mirror.cpp (docs/performance.md, issue 14):
+// - every result column is computed as a whole and stored once, straight
+//   into the returned Result (PairFactory::keep_sign_result);
+// - nothing here builds text: every refusal calls a cold, never-inlined
+//   function that takes the offending values (the error path stays out of
+//   the instruction stream and of the inliner's budget);
+// - the sums are GLM's, in GLM's order, so crop and reflect give the same
+//   bits as the out-of-line versions they replace.
+#pragma once
+
+#include "frustum/crop.hpp"
+#include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/simd4.hpp"
+#include "frustum/plane.hpp"
+
+#include <cmath>
+#include <limits>
+
+#if defined(__GNUC__)
+#define FRUSTUM_HOT_INLINE inline __attribute__((always_inline))
+#define FRUSTUM_COLD __attribute__((cold, noinline))
+#else
+#define FRUSTUM_HOT_INLINE inline
+#define FRUSTUM_COLD
+#endif
+
+namespace frustum::detail {
+
+// ---- refusals (src/pair_update_errors.cpp; texts pinned by tests/math) ----
+
+// "crop rectangle must be finite" / "... sizes must be > 0" / "... inside the image".
+template <class T>
+FRUSTUM_COLD Error crop_rect_error(const CropRect<T>& rect, const char* function);
+// "plane must be finite" / "plane normal must be non-zero and finite".
+template <class T>
+FRUSTUM_COLD Error plane_error(const Vec4<T>& abcd, const char* function);
+
+// ---- checks ----
+
+template <class T>
+FRUSTUM_HOT_INLINE bool crop_rect_is_valid(const CropRect<T>& r) {
+    // Every comparison is false for NaN; infinities fail the size bounds.
+    return std::isfinite(r.full_width) && std::isfinite(r.full_height) && r.full_width > T(0) &&
+           r.full_height > T(0) && r.width > T(0) && r.height > T(0) && r.x >= T(0) && r.y >= T(0) &&
+           r.x + r.width <= r.full_width && r.y + r.height <= r.full_height;
+}
+
+// One test catches NaN and infinity in any coefficient (inf - inf and
+// anything + NaN are not finite) and a zero or overflowing normal.
+template <class T>
+FRUSTUM_HOT_INLINE bool plane_usable(const Vec4<T>& abcd, T normal_length_squared) {
+    return std::isfinite(normal_length_squared + abcd.w) && normal_length_squared > T(0);
+}
+
+template <class T>
+FRUSTUM_HOT_INLINE T normal_length_squared(const Vec4<T>& abcd) {
+    const Vec3<T> n(abcd);
+    return glm::dot(n, n);
+}
+
+// ---- crop (eq. 14-15) ----
+
+// Crop coefficients (eq. 14): x' = w x + (w - 1 - 2 X/bw) w_clip.
+template <class T>
+struct CropMap {
+    T sx, tx, sy, ty;
+};
+template <class T>
+FRUSTUM_HOT_INLINE CropMap<T> crop_map(const CropRect<T>& r) {
+    const T inv_width = T(1) / r.width, inv_height = T(1) / r.height;
+    const T w = r.full_width * inv_width;
+    const T h = r.full_height * inv_height;
+    return {w, w - T(1) - T(2) * r.x * inv_width, h, h - T(1) - T(2) * r.y * inv_height};
+}
+
+// Row 0 of M' for the clip-space map x' = sx x + tx w, y' = sy y + ty w is
+// sx m0 + tx m3 (row 1 likewise); column j of M' is therefore
+// M_j * (sx, sy, 1, 1) + M_j.w * (tx, ty, 0, 0). The inverse undoes it
+// column-wise: inv0 / sx, inv1 / sy, inv3 - (tx / sx) inv0 - (ty / sy) inv1.
+template <class T>
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> scale_offset_xy(const MatrixPair<T>& pair, T sx, T tx, T sy, T ty) {
+    const Cols<T> m = load(pair.matrix());
+    const Cols<T> inv = load(pair.inverse());
+    const V4<T> scale{sx, sy, T(1), T(1)};
+    const V4<T> offset{tx, ty, T(0), T(0)};
+    const T inv_sx = T(1) / sx, inv_sy = T(1) / sy;
+    const auto column = [&](int j) { return store<T>(m.c[j] * scale + m.c[j][3] * offset); };
+    return PairFactory::keep_sign_result<T>(column(0), column(1), column(2), column(3), store<T>(inv.c[0] * inv_sx),
+                                            store<T>(inv.c[1] * inv_sy), store<T>(inv.c[2]),
+                                            store<T>(inv.c[3] - (tx * inv_sx) * inv.c[0] - (ty * inv_sy) * inv.c[1]),
+                                            PairFactory::traits(pair));
+}
+
+// ---- reflect (eq. 16, rank-one form) ----
+
+// M' = M R = M - 2 (M n) c^T: column j of M' is M_j - 2 c_j (M n).
+// inv' = R inv = inv - 2 n (c^T inv): column j gets -2 (c . inv_j) n.
+// c is the unit plane.
+template <class T>
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair, const Vec4<T>& unit_plane) {
+    const Cols<T> m = load(pair.matrix());
+    const Cols<T> inv = load(pair.inverse());
+    const V4<T> c = load(unit_plane);
+    const V4<T> n{c[0], c[1], c[2], T(0)};
+    const V4<T> m_n = mat_vec(m, n);
+    const V4<T> two_c = T(2) * c;
+    const V4<T> two_c_inv = T(2) * dots(transpose(inv), c); // 2 (c . inv_j)
+    return PairFactory::keep_sign_result<T>(
+        store<T>(m.c[0] - two_c[0] * m_n), store<T>(m.c[1] - two_c[1] * m_n), store<T>(m.c[2] - two_c[2] * m_n),
+        store<T>(m.c[3] - two_c[3] * m_n), store<T>(inv.c[0] - two_c_inv[0] * n), store<T>(inv.c[1] - two_c_inv[1] * n),
+        store<T>(inv.c[2] - two_c_inv[2] * n), store<T>(inv.c[3] - two_c_inv[3] * n), PairFactory::flipped_traits(pair));
+}
+
+// ---- oblique clip (eq. 20-27, column form; oblique_clip.hpp) ----
+
+// The oblique clip of the pair (m, inv) by the plane p, which need not be
+// unit: every output is invariant under p's scale (k c and X are). c_clip is
+// p in this pair's clip space, Q = k_inverse q and m3 . Q with m3 = k_row3
+// and the sign k_sign (oblique_clip_core.hpp: mirror forms them on the
+// unreflected pair). When a check fails or the numbers leave the safe range
+// it returns slow(): the caller's normalized reference form (cold, in
+// src/oblique_clip.cpp and mirror.cpp), which refuses with the error text
+// or, at a rounding boundary of a check, gives the result.
+//
+// (Forming k and 1 / X_2 from one division, g = 1 / (a b c'_z) with
+// a = (z_f - z_n)(m3 . Q), b = c . Q, was measured: 15% higher mean error,
+// so the two divisions stay.)
+template <class T, class Slow>
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Cols<T>& inv, const V4<T>& p,
+                                                      const V4<T>& c_clip, const Cols<T>& k_inverse,
+                                                      const V4<T>& k_row3, T k_sign, DepthRange depth,
+                                                      unsigned traits, Slow&& slow) {
+    const T z_near = clip_z_near<T>(depth);
+    const T z_far = clip_z_far<T>(depth);
+    const T span = z_far - z_near;
+    const T eps = std::numeric_limits<T>::epsilon();
+    const T floor = T(64) * eps;
+
+    // Eye strictly on the negative side, relative to the eye column's size.
+    const T eye_side = span * c_clip[2];
+    const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
+    // Far corner on the plane's positive side (erratum 2), not a sliver.
+    const V4<T> q{std::copysign(T(1), c_clip[0]), std::copysign(T(1), c_clip[1]), z_far, T(1)};
+    const T c_dot_q = dot<T>(c_clip, q);
+    const T scale = std::abs(c_clip[0]) + std::abs(c_clip[1]) + std::abs(c_clip[2]) + std::abs(c_clip[3]);
+
+    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (analytic-inverse-accuracy.md).
+    const V4<T> big_q = mat_vec(k_inverse, q);
+    const T a = span * (k_sign * dot<T>(k_row3, big_q));
+    const T b = dot<T>(p, big_q);
+    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
+          std::isnormal(b) && std::isnormal(a * c_clip[2]))) {
+        return slow();
+    }
+    const T span_k = a / b;
+    // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
+    // column j. T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
+    // column j - (X_j / X_2) column 2.
+    const V4<T> m_w{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    const V4<T> row2 = span_k * p + z_near * m_w;
+    const auto column = [&](int j) {
+        V4<T> out = m.c[j];
+        out[2] = row2[j];
+        return store<T>(out);
+    };
+    const V4<T> x = span_k * c_clip + V4<T>{T(0), T(0), T(0), z_near};
+    const T inv_x2 = T(1) / x[2];
+    const V4<T> x_over_x2 = x * inv_x2;
+    return PairFactory::keep_sign_result<T>(
+        column(0), column(1), column(2), column(3), store<T>(inv.c[0] - x_over_x2[0] * inv.c[2]),
+        store<T>(inv.c[1] - x_over_x2[1] * inv.c[2]), store<T>(inv.c[2] * inv_x2),
+        store<T>(inv.c[3] - x_over_x2[3] * inv.c[2]), traits);
+}
+
+} // namespace frustum::detail

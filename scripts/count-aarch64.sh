@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Instructions executed on aarch64 by one call of each hot pair update
+# (success path) and of its baseline "new matrix + glm::inverse" (issue 14).
+# Cross-builds the library and tests/bench/count_driver.cpp with Debian's
+# aarch64-linux-gnu-g++ (-O3, as CMake's Release), runs the driver under
+# qemu-aarch64 with one instruction per translation block and no chaining,
+# and counts the executed blocks ("-d exec" prints one line per block):
+#   per call = (count(R2 repeats) - count(R1 repeats)) / (R2 - R1) - loop,
+# where `loop` is the same for the empty op (the loop's own instructions).
+#   bash scripts/count-aarch64.sh [OUT_DIR]   (default build-aarch64)
+# Needs g++-aarch64-linux-gnu, qemu-user, libglm-dev (install-deps.sh --bench).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=${1:-$root/build-aarch64}
+mkdir -p "$out/include"
+cxx=${CXX_AARCH64:-aarch64-linux-gnu-g++}
+sysroot=${AARCH64_SYSROOT:-/usr/aarch64-linux-gnu}
+# GLM is header-only: expose just it, never the host's /usr/include.
+ln -sfn /usr/include/glm "$out/include/glm"
+flags=(-std=c++17 -O3 -DNDEBUG -I"$root/frustum/include" -isystem "$out/include" -I"$root/tests/bench")
+
+objects=()
+for src in "$root"/frustum/src/*.cpp; do
+  obj="$out/$(basename "${src%.cpp}").o"
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/frustum/include" -newer "$obj" -print -quit)" ]; then
+    "$cxx" "${flags[@]}" -c "$src" -o "$obj"
+  fi
+  objects+=("$obj")
+done
+"$cxx" "${flags[@]}" -static "$root/tests/bench/count_driver.cpp" "${objects[@]}" -o "$out/count_driver"
+
+count() { # op repeats -> executed instructions of the whole run
+  qemu-aarch64 -L "$sysroot" -singlestep -d exec,nochain -D /dev/stdout "$out/count_driver" "$1" "$2" |
+    grep -c '^Trace'
+}
+r1=10
+r2=110
+per_call() {
+  local a b
+  a=$(count "$1" $r1)
+  b=$(count "$1" $r2)
+  echo $(((b - a) / (r2 - r1)))
+}
+loop=$(per_call none)
+echo "| operation | analytic (library) | new matrix + glm::inverse |"
+echo "|---|---|---|"
+for op in crop reflect clip mirror; do
+  echo "| $op | $(($(per_call "$op") - loop)) | $(($(per_call "${op}_glm") - loop)) |"
+done
+echo "| glm::inverse alone | - | $(($(per_call glm_inverse) - loop)) |"
+echo
+echo "(instructions per call on the success path, $("$cxx" --version | head -1), $(qemu-aarch64 --version | head -1); loop overhead $loop subtracted)"
