@@ -71,9 +71,7 @@ Status preflight(const std::vector<unsigned char>& bytes, bool is_glb, const Bud
     if (Status depth = detail::check_json_depth(json, json_bytes); !depth) {
         return depth;
     }
-    return detail::check_json_and_uris(json, json_bytes, budget.max_decoded_bytes,
-                                       " the budget of " + detail::format_bytes(budget.max_decoded_bytes) +
-                                           " (raise it with --max-memory-mb)");
+    return detail::check_json_and_uris(json, json_bytes, budget);
 }
 
 } // namespace

@@ -39,14 +39,16 @@ struct Budget {
     // Decoded bytes the scene may hold: vertex attributes as loaded (POSITION
     // and NORMAL 12 B, TEXCOORD_0 8 B, COLOR_0 16 B per vertex), indices 4 B
     // each, RGBA8 images, and the parsed JSON (kJsonValueBytes per value).
-    std::uint64_t max_decoded_bytes = 1ull << 30; // --max-memory-mb
-    // Nodes in the file, and mesh primitives in the file.
-    std::uint64_t max_nodes = 1000000; // --max-nodes
+    // A render's peak memory is about 5x this (GPU copies, llvmpipe).
+    std::uint64_t max_decoded_bytes = 256ull << 20; // --max-memory-mb
+    // Nodes in the file (counted in the JSON before tinygltf parses it:
+    // it spends about 1 KB and 20 us per node), and mesh primitives.
+    std::uint64_t max_nodes = 100000; // --max-nodes
     // Longest parent-to-child chain (a root alone has depth 1).
-    std::uint64_t max_depth = 100000; // --max-depth
+    std::uint64_t max_depth = 10000; // --max-depth
     // Vertices drawn per frame: over every node with a mesh, the index
     // count (or vertex count) of each of its primitives.
-    std::uint64_t max_drawn_vertices = 1ull << 28; // --max-drawn-vertices
+    std::uint64_t max_drawn_vertices = 1ull << 25; // --max-drawn-vertices
 };
 
 // Bytes one parsed JSON value costs (nlohmann's tree for the uri check is not

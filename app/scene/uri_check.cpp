@@ -1,5 +1,6 @@
 #include "uri_check.hpp"
 
+#include "budget_check.hpp"
 #include "foreign_message.hpp"
 
 #include "scene/load_gltf.hpp"
@@ -55,8 +56,10 @@ bool has_scheme(const std::string& uri) {
 // 1 a root member ("buffers"), 2 an element of it, 3 a member of that.
 class UriSax : public nlohmann::json_sax<nlohmann::json> {
 public:
-    UriSax(std::uint64_t max_values, const std::string& budget_note)
-        : max_values_(max_values), budget_note_(budget_note) {}
+    explicit UriSax(const Budget& budget)
+        : max_values_(budget.max_decoded_bytes / kJsonValueBytes), max_nodes_(budget.max_nodes),
+          budget_note_(" the budget of " + format_bytes(budget.max_decoded_bytes) +
+                       " (raise it with --max-memory-mb)") {}
 
     bool null() override { return value(Kind::Other); }
     bool boolean(bool) override { return value(Kind::Other); }
@@ -128,6 +131,11 @@ private:
         }
         if (depth == 2 && stack_[1] == Kind::Array) {
             ++item_;
+            if (root_key_ == "nodes" && std::uint64_t(item_) >= max_nodes_) {
+                return fail("the file has more than " + std::to_string(max_nodes_) +
+                            " nodes, over the limit of " + std::to_string(max_nodes_) +
+                            " (raise it with --max-nodes)");
+            }
         }
         const bool in_list = list_ != nullptr && depth >= 2 && stack_[1] == Kind::Array;
         if (in_list && depth == 2) {
@@ -149,7 +157,8 @@ private:
     std::string name() const { return std::string(list_) + " " + std::to_string(item_); }
 
     std::uint64_t max_values_;
-    const std::string& budget_note_;
+    std::uint64_t max_nodes_;
+    std::string budget_note_;
     std::uint64_t values_ = 0;
     std::vector<Kind> stack_;
     std::string key_;      // the last member name read
@@ -201,8 +210,8 @@ std::string uri_problem(const std::string& uri) {
 }
 
 frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
-                                    std::uint64_t max_tree_bytes, const std::string& budget_note) {
-    UriSax events(max_tree_bytes / kJsonValueBytes, budget_note);
+                                    const Budget& budget) {
+    UriSax events(budget);
     bool parsed = false;
     try {
         parsed = nlohmann::json::sax_parse(text, text + size_bytes, &events);

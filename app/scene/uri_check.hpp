@@ -5,6 +5,8 @@
 
 #include <frustum/result.hpp>
 
+#include "scene/load_gltf.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -19,10 +21,10 @@ std::string uri_problem(const std::string& uri);
 // stays O(nesting depth + longest string); call check_json_depth first) and
 // checks that it is valid JSON, that the root is an object, that every
 // buffers[i].uri and images[i].uri is acceptable, and that the tree tinygltf
-// will build (values * kJsonValueBytes) fits `max_tree_bytes`; `budget_note`
-// ends that message (" of the budget ... (raise it with --max-memory-mb)").
+// will build (values * kJsonValueBytes) fits budget.max_decoded_bytes and
+// the "nodes" array budget.max_nodes (tinygltf spends ~1 KB and
+// 20 us per node, so this is refused before it parses).
 frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
-                                    std::uint64_t max_tree_bytes = UINT64_MAX,
-                                    const std::string& budget_note = {});
+                                    const Budget& budget = {});
 
 } // namespace scene::detail
