@@ -7,6 +7,11 @@
 # Inputs found along the way stay in build-fuzz/corpus/<target> (the seeds in
 # tests/fuzz/corpus are never written); crashes land in
 # build-fuzz/artifacts/<target>/ and make the script exit 1.
+# Memory: every input runs under a 1536 MiB RSS limit and a 1024 MiB limit
+# per allocation (libFuzzer's -rss_limit_mb / -malloc_limit_mb; an address-
+# space rlimit cannot be used with ASan's terabytes of shadow mappings). The
+# load budget (256 MiB decoded) must refuse first, so an input that gets
+# past it to a giant allocation is reported as a crash.
 set -euo pipefail
 
 seconds=${1:-60}
@@ -42,7 +47,7 @@ for t in $targets; do
     fi
     before=$(find "$artifacts" -type f | wc -l)
     status=0
-    "$exe" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -max_len="${max_len[$t]:-8192}" \
+    "$exe" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=1536 -malloc_limit_mb=1024 -max_len="${max_len[$t]:-8192}" \
         -dict="$root/tests/fuzz/$t.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
         "$corpus" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1 || status=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

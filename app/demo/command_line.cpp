@@ -74,6 +74,9 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
         return apply_curved_option(r.curved, name, value);
     } else if (name == "--lens-grid" || name == "--lens-power") {
         return apply_lens_option(r, name, value);
+    } else if (name == "--max-memory-mb" || name == "--max-nodes" || name == "--max-depth" ||
+               name == "--max-drawn-vertices") {
+        return apply_budget_option(r.budget, name, value);
     } else {
         return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
     }
@@ -83,7 +86,8 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
 bool takes_value(std::string_view name) {
     for (std::string_view known : {"--scene", "--camera", "--effect", "--tiles", "--size", "--backend", "--depth",
                                    "--mirror", "--out", "--patches", "--sagitta", "--cap", "--lens-grid",
-                                   "--lens-power"}) {
+                                   "--lens-power", "--max-memory-mb", "--max-nodes", "--max-depth",
+                                   "--max-drawn-vertices"}) {
         if (name == known) {
             return true;
         }
@@ -140,14 +144,48 @@ std::optional<Failure> apply_lens_option(RenderRequest& request, std::string_vie
     } else if (name == "--lens-power") {
         float power = 0.0f;
         const auto [end, error] = std::from_chars(first, last, power);
-        if (value.empty() || error != std::errc() || end != last || !(power > 0.0f && power <= 8.0f)) {
-            return usage("--lens-power must be a number in (0, 8], got " + quoted);
+        if (value.empty() || error != std::errc() || end != last || !(power > 0.0f && power <= kMaxLensPower)) {
+            return usage("--lens-power must be a number in (0, 2], got " + quoted);
         }
         request.lens_power = power;
     } else {
         return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
     }
     return std::nullopt;
+}
+
+std::optional<Failure> apply_budget_option(scene::Budget& budget, std::string_view name,
+                                           const std::string& value) {
+    unsigned long long number = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
+    // 2^40 MiB and 2^60 counts: far above any machine, below uint64 overflow.
+    const unsigned long long most = name == "--max-memory-mb" ? (1ull << 40) : (1ull << 60);
+    if (value.empty() || error != std::errc() || end != value.data() + value.size() || number < 1 ||
+        number > most) {
+        return usage(std::string(name) + " must be a whole number in 1.." + std::to_string(most) + ", got '" +
+                     value + "'");
+    }
+    if (name == "--max-memory-mb") {
+        budget.max_decoded_bytes = number << 20;
+    } else if (name == "--max-nodes") {
+        budget.max_nodes = number;
+    } else if (name == "--max-depth") {
+        budget.max_depth = number;
+    } else {
+        budget.max_drawn_vertices = number;
+    }
+    return std::nullopt;
+}
+
+unsigned long long output_image_bytes(int width_px, int height_px, std::size_t effects) {
+    const unsigned long long w = static_cast<unsigned long long>(width_px);
+    const unsigned long long h = static_cast<unsigned long long>(height_px);
+    unsigned long long bytes = effects * w * h * 4;
+    if (effects > 1) { // image::contact_sheet(): 2 columns, 4 px borders
+        const unsigned long long rows = (effects + 1) / 2;
+        bytes += (2 * (w + 4) + 4) * (rows * (h + 4) + 4) * 4;
+    }
+    return bytes;
 }
 
 std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::vector<std::string>& args) {
@@ -185,6 +223,20 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
                      " needs at least one pixel per tile, but the image is " + std::to_string(request.width_px) +
                      "x" + std::to_string(request.height_px));
     }
+    const long long tiles = static_cast<long long>(request.tile_columns) * request.tile_rows;
+    if (tiles > kMaxTiles) {
+        return usage("--tiles " + std::to_string(request.tile_columns) + "x" + std::to_string(request.tile_rows) +
+                     " is " + std::to_string(tiles) + " tiles, over the limit of " + std::to_string(kMaxTiles));
+    }
+    const unsigned long long image_bytes =
+        output_image_bytes(request.width_px, request.height_px, request.effects.size());
+    if (image_bytes > request.budget.max_decoded_bytes) {
+        return usage("--size " + std::to_string(request.width_px) + "x" + std::to_string(request.height_px) +
+                     " with " + std::to_string(request.effects.size()) + " effect(s) holds " +
+                     std::to_string(image_bytes >> 20) + " MiB of images (with the contact sheet), over the budget of " +
+                     std::to_string(request.budget.max_decoded_bytes >> 20) +
+                     " MiB (raise it with --max-memory-mb, or render fewer effects)");
+    }
     const bool lens = std::find(request.effects.begin(), request.effects.end(), render::Effect::Lens) !=
                       request.effects.end();
     if (lens && request.lens_grid > std::min(request.width_px, request.height_px)) {
@@ -214,7 +266,8 @@ std::string help_text() {
            "                      default \"main\", else camera 0, else one framing the scene\n"
            "  --effect E          plain | mirror | tiles | frustum | curved | lens | nonaffine |\n"
            "                      all (default all)\n"
-           "  --tiles NxM         columns x rows of the tiles effect (default 3x2)\n"
+           "  --tiles NxM         columns x rows of the tiles effect, at most 16384 tiles\n"
+           "                      and one pixel per tile (default 3x2)\n"
            "  --size WxH          image size in pixels, 1..8192 each (default 640x360)\n"
            "  --backend B         egl | osmesa (default: egl, falling back to osmesa with a note)\n"
            "  --depth D           zero_to_one: [0, 1] clip depth via clip control when the\n"
@@ -228,10 +281,17 @@ std::string help_text() {
            "                      0 = the planar mirror; at most half the mirror's half-diagonal)\n"
            "  --cap C             curved effect: sphere (default) | cylinder (axis along the\n"
            "                      mirror's second side)\n"
-           "  --lens-grid N       lens effect: N x N tiles, 1..256 (default 16)\n"
-           "  --lens-power P      lens effect: p of eq. 34, in (0, 8] (default 2; 1 = no lens)\n"
+           "  --lens-grid N       lens effect: N x N tiles, 1..128 (default 16)\n"
+           "  --lens-power P      lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens;\n"
+           "                      stronger powers make tiles degenerate in single precision)\n"
            "  --out DIR           output folder, created if missing (default out)\n"
            "  --verbose           print the GL context and its KHR_debug messages\n"
+           "  --max-memory-mb N   budget for the decoded scene (vertices, indices, images,\n"
+           "                      parsed JSON) and, separately, for the output images of\n"
+           "                      the run (default 256; a render peaks at about 5x the scene's)\n"
+           "  --max-nodes N       most nodes, and most mesh primitives, in the file (default 100000)\n"
+           "  --max-depth N       longest parent-to-child node chain (default 10000)\n"
+           "  --max-drawn-vertices N  most vertices drawn per frame, over all nodes (default 33554432)\n"
            "\n"
            "Writes DIR/<effect>.png per effect and, for several, DIR/contact_sheet.png;\n"
            "prints each path written. Progress goes to stderr.\n"

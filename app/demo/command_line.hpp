@@ -17,6 +17,7 @@
 #include <render/curved_mirror.hpp>
 #include <render/depth_policy.hpp>
 #include <render/effect.hpp>
+#include <scene/load_gltf.hpp>
 
 #include <optional>
 #include <string>
@@ -40,6 +41,9 @@ struct RenderRequest {
     float lens_power = 2.0f;            // --lens-power: p of eq. 34
     std::string out_dir = "out";
     bool verbose = false;
+    // --max-memory-mb (also bounds the run's output images), --max-nodes,
+    // --max-depth, --max-drawn-vertices.
+    scene::Budget budget;
 };
 
 struct HelpRequest {};
@@ -55,9 +59,24 @@ std::string help_text();
 std::optional<Failure> apply_curved_option(render::CurvedMirrorOptions& curved, std::string_view name,
                                            const std::string& value);
 
-// Applies --lens-grid N (1..kMaxLensGrid) or --lens-power P (0 < P <= 8); a
-// usage Failure names the value. Shared with lens-report.
-inline constexpr int kMaxLensGrid = 256;
+// Applies --lens-grid N (1..kMaxLensGrid) or --lens-power P (0 < P <=
+// kMaxLensPower); a usage Failure names the value. Shared with lens-report.
+// The bounds are where every tile of eq. 34 stays a valid frustum in single
+// precision (measured on the showcase at 64x64 .. 2048x512: power 3 breaks
+// at grid 128, power 2 at grid 256, power 5 already at grid 16).
+inline constexpr int kMaxLensGrid = 128;
+inline constexpr float kMaxLensPower = 2.0f;
+// Most tiles of the tiles effect (columns x rows): 128 x 128.
+inline constexpr long long kMaxTiles = 16384;
+
+// Applies --max-memory-mb, --max-nodes, --max-depth or --max-drawn-vertices
+// (whole numbers >= 1) to `budget`; shared with the window command.
+std::optional<Failure> apply_budget_option(scene::Budget& budget, std::string_view name,
+                                           const std::string& value);
+
+// The bytes a render run holds at once: one RGBA8 image per effect plus
+// the contact sheet when there are several (2 columns, 4 px borders).
+unsigned long long output_image_bytes(int width_px, int height_px, std::size_t effects);
 std::optional<Failure> apply_lens_option(RenderRequest& request, std::string_view name, const std::string& value);
 
 } // namespace demo

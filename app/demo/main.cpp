@@ -6,7 +6,9 @@
 #include "demo/warp_reports.hpp"
 #include "demo/window_main.hpp"
 
+#include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -56,10 +58,7 @@ int warp_report_main(const std::vector<std::string>& args) {
     return 0;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+int run_main(const std::vector<std::string>& args) {
     if (!args.empty() && args[0] == "curved-report") {
         return curved_report_main(args);
     }
@@ -89,4 +88,22 @@ int main(int argc, char** argv) {
         std::cout << path << '\n';
     }
     return 0;
+}
+
+} // namespace
+
+// No exception leaves main: running out of memory (a budget raised past
+// what the machine has) is an error line and exit 1, not an abort.
+int main(int argc, char** argv) {
+    try {
+        const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+        return run_main(args);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "frustum-demo: error: out of memory while " << demo::g_activity
+                  << " (lower --size or the --max-* budget options)\n";
+    } catch (const std::exception& error) {
+        std::cerr << "frustum-demo: error: internal error while " << demo::g_activity << ": " << error.what()
+                  << '\n';
+    }
+    return 1;
 }

@@ -29,4 +29,30 @@ frustum::Status prepare_output_dir(const std::string& path) {
     return {};
 }
 
+std::vector<std::string> missing_folders(const std::string& path) {
+    std::vector<std::string> missing;
+    std::error_code error;
+    for (std::filesystem::path at = std::filesystem::path(path).lexically_normal();
+         !at.empty() && at != at.root_path(); at = at.parent_path()) {
+        if (at.filename().empty()) { // "out/" normalizes to "out/" with an empty last name
+            continue;
+        }
+        if (std::filesystem::symlink_status(at, error).type() != std::filesystem::file_type::not_found) {
+            break;
+        }
+        missing.push_back(at.string());
+    }
+    return missing;
+}
+
+void remove_empty_folders(const std::vector<std::string>& folders) {
+    for (const std::string& folder : folders) {
+        std::error_code error;
+        if (!std::filesystem::is_empty(folder, error) || error) {
+            return;
+        }
+        std::filesystem::remove(folder, error); // only ever removes an empty folder
+    }
+}
+
 } // namespace demo

@@ -7,6 +7,7 @@
 #include <image/contact_sheet.hpp>
 #include <image/png.hpp>
 #include <render/camera.hpp>
+#include <render/curved_mirror.hpp>
 #include <render/renderer.hpp>
 #include <scene/load_gltf.hpp>
 
@@ -44,11 +45,16 @@ frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& 
 }
 
 
-std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter) {
+namespace {
+
+std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
     if (auto status = prepare_output_dir(request.out_dir); !status) {
         return runtime(status.error());
     }
-    auto scene = scene::load_gltf(request.scene_path);
+    g_activity = "loading the scene";
+    scene::LoadOptions load_options;
+    load_options.budget = request.budget;
+    auto scene = scene::load_gltf(request.scene_path, load_options);
     if (!scene) {
         return runtime(scene.error());
     }
@@ -56,6 +62,15 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
     }
+    // --sagitta is bounded by the scene's mirror: checked before any image
+    // is rendered, whichever effects run.
+    if (scene->mirror) {
+        auto cap = render::CurvedMirror::create(*scene->mirror, request.curved.shape, request.curved.sagitta_m);
+        if (!cap) {
+            return Failure{ExitStatus::UsageError, "--sagitta: " + cap.error()};
+        }
+    }
+    g_activity = "rendering";
     auto cameras = render::make_cameras(*scene, *camera_index, request.width_px, request.height_px);
     if (!cameras) {
         return runtime(cameras.error());
@@ -118,6 +133,7 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         }
         images.emplace_back(name, std::move(*picture));
     }
+    g_activity = "writing the contact sheet";
     if (several) {
         std::vector<std::pair<std::string, const image::Image*>> cells;
         for (const auto& [name, picture] : images) {
@@ -132,6 +148,19 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         }
     }
     return run;
+}
+
+} // namespace
+
+const char* g_activity = "starting";
+
+std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter) {
+    const std::vector<std::string> created = missing_folders(request.out_dir);
+    auto outcome = render_into_dir(request, reporter);
+    if (std::holds_alternative<Failure>(outcome)) {
+        remove_empty_folders(created);
+    }
+    return outcome;
 }
 
 } // namespace demo

@@ -26,7 +26,12 @@ struct RenderRun {
     std::vector<std::string> written_paths; // in the order written
 };
 
-// The output folder is checked first, before the scene is read.
+// What the current run is doing ("loading the scene", "rendering"), for
+// main's "out of memory while ..." message when an allocation throws.
+extern const char* g_activity;
+
+// The output folder is checked first, before the scene is read. A run that
+// fails removes the folders it created while they are still empty.
 std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter);
 
 // The offscreen context for a request: exactly --backend when given,

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
+#include <new>
 #include <string>
 
 namespace {
@@ -24,7 +26,7 @@ bool parse_number(const char* text, double& out) {
 
 } // namespace
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
     explain::Options options;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -56,4 +58,16 @@ int main(int argc, char** argv) {
     }
     std::fputs(text->c_str(), stdout);
     return 0;
+}
+
+// No exception leaves main: an allocation failure is a one-line error, exit 1.
+int main(int argc, char** argv) {
+    try {
+        return run_main(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("frustum-explain: out of memory while writing the walkthrough\n", stderr);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "frustum-explain: internal error: %s\n", error.what());
+    }
+    return 1;
 }

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace image {
@@ -64,11 +65,58 @@ frustum::Result<int> create_temporary(const std::string& path, std::string& temp
     return frustum::Error{"image::write_png(): cannot create '" + temp_path + "': " + errno_text()};
 }
 
+// What lstat() found at `path`, for the refusal message.
+const char* kind_of(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISLNK(mode)) return "a symbolic link";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
+// The rename at the end replaces whatever is at `path`: only a regular file
+// (or nothing) may be there, never a device node, FIFO, link or directory.
+frustum::Status check_replaceable(const std::string& path) {
+    struct stat status{};
+    if (::lstat(path.c_str(), &status) != 0) {
+        if (errno == ENOENT) {
+            return {};
+        }
+        return frustum::Error{"image::write_png(): cannot inspect '" + path + "': " + errno_text()};
+    }
+    if (!S_ISREG(status.st_mode)) {
+        return frustum::Error{"image::write_png(): '" + path + "' is " + kind_of(status.st_mode) +
+                              ", not a regular file; refusing to replace it"};
+    }
+    return {};
+}
+
+// stb_image_write computes row and image sizes in int: (width*4+1)*height
+// must fit, or its arithmetic overflows.
+frustum::Status check_encodable(const Image& image) {
+    const long long filtered_bytes = (static_cast<long long>(image.width) * 4 + 1) * image.height;
+    if (filtered_bytes > INT_MAX / 2) {
+        return frustum::Error{"image::write_png(): " + std::to_string(image.width) + "x" +
+                              std::to_string(image.height) +
+                              " px is too large to encode (the PNG encoder holds at most " +
+                              std::to_string(INT_MAX / 2) + " bytes)"};
+    }
+    return {};
+}
+
 } // namespace
 
 frustum::Status write_png(const Image& image, const std::string& path) {
     if (auto valid = validate(image, "image::write_png()"); !valid) {
         return valid;
+    }
+    if (auto encodable = check_encodable(image); !encodable) {
+        return encodable;
+    }
+    if (auto replaceable = check_replaceable(path); !replaceable) {
+        return replaceable;
     }
     std::string temp_path;
     auto fd = create_temporary(path, temp_path);

@@ -1,5 +1,6 @@
 #include "scene/load_gltf.hpp"
 
+#include "budget_check.hpp"
 #include "build_scene.hpp"
 #include "fs_sandbox.hpp"
 #include "glb_check.hpp"
@@ -45,7 +46,7 @@ std::string first_bytes_hex(const std::vector<unsigned char>& bytes) {
 }
 
 // Container and JSON checks that must pass before tinygltf sees the bytes.
-Status preflight(const std::vector<unsigned char>& bytes, bool is_glb) {
+Status preflight(const std::vector<unsigned char>& bytes, bool is_glb, const Budget& budget) {
     if (bytes.empty()) {
         return Error{"the file is empty"};
     }
@@ -70,7 +71,7 @@ Status preflight(const std::vector<unsigned char>& bytes, bool is_glb) {
     if (Status depth = detail::check_json_depth(json, json_bytes); !depth) {
         return depth;
     }
-    return detail::check_json_and_uris(json, json_bytes);
+    return detail::check_json_and_uris(json, json_bytes, budget);
 }
 
 } // namespace
@@ -91,16 +92,23 @@ frustum::Result<Scene> load_gltf(const std::string& path, const LoadOptions& opt
         return fail(bytes.error());
     }
     const bool is_glb = detail::has_glb_magic(bytes->data(), bytes->size());
-    if (Status checked = preflight(*bytes, is_glb); !checked) {
+    if (Status checked = preflight(*bytes, is_glb, options.budget); !checked) {
         return fail(checked.error());
     }
     frustum::Result<tinygltf::Model> model =
-        detail::parse_model(*bytes, is_glb, *sandbox, options.max_image_pixels);
+        detail::parse_model(*bytes, is_glb, *sandbox, options.max_image_pixels, options.budget);
     if (!model) {
         return fail(model.error());
     }
     if (Status valid = detail::validate_model(*model); !valid) {
         return fail(valid.error());
+    }
+    std::uint64_t image_bytes = 0;
+    for (const tinygltf::Image& image : model->images) {
+        image_bytes += image.image.size();
+    }
+    if (Status fits = detail::check_budget(*model, options.budget, image_bytes); !fits) {
+        return fail(fits.error());
     }
     frustum::Result<Scene> scene = detail::build_scene(std::move(*model), options);
     if (!scene) {

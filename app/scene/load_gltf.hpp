@@ -31,6 +31,30 @@
 
 namespace scene {
 
+// What one load may cost, checked before anything large is allocated: an
+// input that exceeds a limit is refused with a one-line error naming the
+// value, the limit and the frustum-demo option that raises it. The defaults
+// fit a phone (docs/robustness.md lists them with the measured costs).
+struct Budget {
+    // Decoded bytes the scene may hold: vertex attributes as loaded (POSITION
+    // and NORMAL 12 B, TEXCOORD_0 8 B, COLOR_0 16 B per vertex), indices 4 B
+    // each, RGBA8 images, and the parsed JSON (kJsonValueBytes per value).
+    // A render's peak memory is about 5x this (GPU copies, llvmpipe).
+    std::uint64_t max_decoded_bytes = 256ull << 20; // --max-memory-mb
+    // Nodes in the file (counted in the JSON before tinygltf parses it:
+    // it spends about 1 KB and 20 us per node), and mesh primitives.
+    std::uint64_t max_nodes = 100000; // --max-nodes
+    // Longest parent-to-child chain (a root alone has depth 1).
+    std::uint64_t max_depth = 10000; // --max-depth
+    // Vertices drawn per frame: over every node with a mesh, the index
+    // count (or vertex count) of each of its primitives.
+    std::uint64_t max_drawn_vertices = 1ull << 25; // --max-drawn-vertices
+};
+
+// Bytes one parsed JSON value costs (nlohmann's tree for the uri check is not
+// built; tinygltf's tree and its Value copies of extras are), measured.
+inline constexpr std::uint64_t kJsonValueBytes = 160;
+
 struct LoadOptions {
     // Which glTF scene to flatten; absent: the file's default `scene`, or
     // scene 0 when the file names none. A file without any scenes yields
@@ -40,6 +64,7 @@ struct LoadOptions {
     std::uint64_t max_file_bytes = 256ull << 20;
     // Largest decoded image accepted, in pixels (width * height).
     std::uint64_t max_image_pixels = 8192ull * 8192ull;
+    Budget budget;
 };
 
 frustum::Result<Scene> load_gltf(const std::string& path, const LoadOptions& options = {});

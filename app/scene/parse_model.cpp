@@ -1,6 +1,7 @@
 #include "parse_model.hpp"
 
 #include "foreign_message.hpp"
+#include "budget_check.hpp"
 #include "image_decode.hpp"
 
 #include <exception>
@@ -14,6 +15,9 @@ namespace {
 struct ImageLoaderState {
     const tinygltf::Model* model = nullptr; // being filled by tinygltf
     std::uint64_t max_pixels = 0;
+    std::uint64_t max_rgba_bytes = 0; // the memory budget
+    std::uint64_t decoded_bytes = 0;  // RGBA8 bytes of the images decoded so far
+    std::string budget_note;
     std::string error; // the first image error, already worded for the user
 };
 
@@ -39,7 +43,10 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
         }
         length = view.byteLength;
     }
-    frustum::Result<Image> decoded = decode_rgba8(bytes, length, state->max_pixels);
+    const std::uint64_t left = state->max_rgba_bytes > state->decoded_bytes
+                                   ? state->max_rgba_bytes - state->decoded_bytes : 0;
+    frustum::Result<Image> decoded =
+        decode_rgba8(bytes, length, state->max_pixels, left, state->budget_note);
     if (!decoded) {
         state->error = label + ": " + decoded.error();
         if (err) *err += state->error;
@@ -51,6 +58,7 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
     image->bits = 8;
     image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     image->image = std::move(decoded->rgba);
+    state->decoded_bytes += image->image.size();
     return true;
 }
 
@@ -58,9 +66,13 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
 
 frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& file_bytes,
                                              bool is_glb, FsSandbox& sandbox,
-                                             std::uint64_t max_image_pixels) {
+                                             std::uint64_t max_image_pixels,
+                                             const Budget& budget) {
     tinygltf::Model model;
-    ImageLoaderState images{&model, max_image_pixels, {}};
+    ImageLoaderState images{&model, max_image_pixels, budget.max_decoded_bytes, 0,
+                            " of the budget of " + format_bytes(budget.max_decoded_bytes) +
+                                " (raise it with --max-memory-mb)",
+                            {}};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(sandbox.callbacks());
     loader.SetImageLoader(&load_image, &images);

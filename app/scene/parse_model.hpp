@@ -3,6 +3,8 @@
 
 #include "fs_sandbox.hpp"
 
+#include "scene/load_gltf.hpp"
+
 #include <frustum/result.hpp>
 
 #include <tiny_gltf.h>
@@ -16,8 +18,12 @@ namespace scene::detail {
 // (GLB), check_json_depth() and check_json_and_uris(). On success every
 // image of the model is decoded to RGBA8 (component 4, bits 8). tinygltf's
 // warnings are dropped; its errors (and exceptions) become the error.
+// Images are decoded one at a time while their RGBA8 bytes stay within
+// budget.max_decoded_bytes in total; the first that would exceed it is
+// refused before it is decoded.
 frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& file_bytes,
                                              bool is_glb, FsSandbox& sandbox,
-                                             std::uint64_t max_image_pixels);
+                                             std::uint64_t max_image_pixels,
+                                             const Budget& budget = {});
 
 } // namespace scene::detail

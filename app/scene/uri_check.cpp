@@ -1,10 +1,16 @@
 #include "uri_check.hpp"
 
+#include "budget_check.hpp"
 #include "foreign_message.hpp"
+
+#include "scene/load_gltf.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 namespace scene::detail {
 
@@ -46,32 +52,122 @@ bool has_scheme(const std::string& uri) {
     return std::isalpha(static_cast<unsigned char>(uri[0])) != 0;
 }
 
-frustum::Status check_uris_of(const nlohmann::json& root, const char* array_name,
-                              const char* item_name) {
-    auto array = root.find(array_name);
-    if (array == root.end() || !array->is_array()) {
-        return {};
+// JSON events -> the checks of check_json_and_uris(). Depth 0 is the root,
+// 1 a root member ("buffers"), 2 an element of it, 3 a member of that.
+class UriSax : public nlohmann::json_sax<nlohmann::json> {
+public:
+    explicit UriSax(const Budget& budget)
+        : max_values_(budget.max_decoded_bytes / kJsonValueBytes), max_nodes_(budget.max_nodes),
+          budget_note_(" the budget of " + format_bytes(budget.max_decoded_bytes) +
+                       " (raise it with --max-memory-mb)") {}
+
+    bool null() override { return value(Kind::Other); }
+    bool boolean(bool) override { return value(Kind::Other); }
+    bool number_integer(number_integer_t number) override {
+        if (number < 0 && stack_.size() >= 3 && stack_.back() == Kind::Object &&
+            (key_ == "byteOffset" || key_ == "byteLength" || key_ == "byteStride" ||
+             key_ == "count")) {
+            return fail(root_key_ + "[" + std::to_string(item_) + "] has " + key_ + " " +
+                        std::to_string(number) + ", expected >= 0");
+        }
+        return value(Kind::Other);
     }
-    for (std::size_t i = 0; i < array->size(); ++i) {
-        const nlohmann::json& item = (*array)[i];
-        const std::string name = std::string(item_name) + " " + std::to_string(i);
-        if (!item.is_object()) {
-            return frustum::Error{name + " is not a JSON object"};
+    bool number_unsigned(number_unsigned_t) override { return value(Kind::Other); }
+    bool number_float(number_float_t, const string_t&) override { return value(Kind::Other); }
+    bool string(string_t& text) override { return value(Kind::String, &text); }
+    bool binary(binary_t&) override { return value(Kind::Other); }
+    bool start_object(std::size_t) override { return open(Kind::Object); }
+    bool start_array(std::size_t) override { return open(Kind::Array); }
+    bool end_object() override { return close(); }
+    bool end_array() override { return close(); }
+    bool key(string_t& name) override {
+        key_ = name;
+        if (stack_.size() == 1) {
+            root_key_ = name;
+            list_ = name == "buffers" ? "buffer" : name == "images" ? "image" : nullptr;
+            item_ = -1;
+        } else if (stack_.size() == 3) {
+            uri_key_ = name == "uri";
         }
-        auto uri = item.find("uri");
-        if (uri == item.end()) {
-            continue;
-        }
-        if (!uri->is_string()) {
-            return frustum::Error{name + " uri is not a string"};
-        }
-        const std::string& text = uri->get_ref<const std::string&>();
-        if (std::string problem = uri_problem(text); !problem.empty()) {
-            return frustum::Error{name + " uri \"" + text + "\" " + problem};
-        }
+        return true;
     }
-    return {};
-}
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) override {
+        problem_ = "invalid JSON: " + foreign_message(error.what());
+        return false;
+    }
+
+    const std::string& problem() const { return problem_; }
+
+private:
+    enum class Kind { Object, Array, String, Other };
+
+    bool open(Kind kind) {
+        if (!value(kind)) {
+            return false;
+        }
+        stack_.push_back(kind);
+        return true;
+    }
+    bool close() {
+        stack_.pop_back();
+        if (stack_.size() == 1) {
+            list_ = nullptr; // the end of "buffers" or "images"
+        }
+        return true;
+    }
+    bool fail(std::string message) {
+        problem_ = std::move(message);
+        return false;
+    }
+    bool value(Kind kind, const std::string* text = nullptr) {
+        if (++values_ > max_values_) {
+            return fail("the JSON holds more than " + std::to_string(max_values_) +
+                        " values, whose parsed tree (" + std::to_string(kJsonValueBytes) +
+                        " B per value) would be over" + budget_note_);
+        }
+        const std::size_t depth = stack_.size();
+        if (depth == 0 && kind != Kind::Object) {
+            return fail("the JSON root is not an object");
+        }
+        if (depth == 2 && stack_[1] == Kind::Array) {
+            ++item_;
+            if (root_key_ == "nodes" && std::uint64_t(item_) >= max_nodes_) {
+                return fail("the file has more than " + std::to_string(max_nodes_) +
+                            " nodes, over the limit of " + std::to_string(max_nodes_) +
+                            " (raise it with --max-nodes)");
+            }
+        }
+        const bool in_list = list_ != nullptr && depth >= 2 && stack_[1] == Kind::Array;
+        if (in_list && depth == 2) {
+            if (kind != Kind::Object) {
+                return fail(name() + " is not a JSON object");
+            }
+        }
+        if (in_list && depth == 3 && uri_key_) {
+            uri_key_ = false;
+            if (kind != Kind::String) {
+                return fail(name() + " uri is not a string");
+            }
+            if (std::string problem = uri_problem(*text); !problem.empty()) {
+                return fail(name() + " uri \"" + *text + "\" " + problem);
+            }
+        }
+        return true;
+    }
+    std::string name() const { return std::string(list_) + " " + std::to_string(item_); }
+
+    std::uint64_t max_values_;
+    std::uint64_t max_nodes_;
+    std::string budget_note_;
+    std::uint64_t values_ = 0;
+    std::vector<Kind> stack_;
+    std::string key_;      // the last member name read
+    std::string root_key_; // the root member being read ("accessors")
+    const char* list_ = nullptr; // "buffer" or "image" while inside that array
+    long long item_ = -1;
+    bool uri_key_ = false;
+    std::string problem_;
+};
 
 } // namespace
 
@@ -113,20 +209,19 @@ std::string uri_problem(const std::string& uri) {
     }
 }
 
-frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes) {
-    nlohmann::json root;
+frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
+                                    const Budget& budget) {
+    UriSax events(budget);
+    bool parsed = false;
     try {
-        root = nlohmann::json::parse(text, text + size_bytes);
+        parsed = nlohmann::json::sax_parse(text, text + size_bytes, &events);
     } catch (const nlohmann::json::exception& error) {
         return frustum::Error{"invalid JSON: " + foreign_message(error.what())};
     }
-    if (!root.is_object()) {
-        return frustum::Error{"the JSON root is not an object"};
+    if (!parsed) {
+        return frustum::Error{events.problem().empty() ? "invalid JSON" : events.problem()};
     }
-    if (frustum::Status status = check_uris_of(root, "buffers", "buffer"); !status) {
-        return status;
-    }
-    return check_uris_of(root, "images", "image");
+    return {};
 }
 
 } // namespace scene::detail

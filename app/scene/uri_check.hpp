@@ -5,7 +5,10 @@
 
 #include <frustum/result.hpp>
 
+#include "scene/load_gltf.hpp"
+
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace scene::detail {
@@ -14,8 +17,14 @@ namespace scene::detail {
 // "data:...;base64,..." and relative paths to a file below the folder.
 std::string uri_problem(const std::string& uri);
 
-// Parses the JSON (call check_json_depth first) and checks that the root is an
-// object and that every buffers[i].uri and images[i].uri is acceptable.
-frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes);
+// Reads the JSON once as a stream of events (no tree is built, so memory
+// stays O(nesting depth + longest string); call check_json_depth first) and
+// checks that it is valid JSON, that the root is an object, that every
+// buffers[i].uri and images[i].uri is acceptable, and that the tree tinygltf
+// will build (values * kJsonValueBytes) fits budget.max_decoded_bytes and
+// the "nodes" array budget.max_nodes (tinygltf spends ~1 KB and
+// 20 us per node, so this is refused before it parses).
+frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
+                                    const Budget& budget = {});
 
 } // namespace scene::detail

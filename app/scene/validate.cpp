@@ -56,6 +56,48 @@ Status validate_material(const tinygltf::Model& model, int index) {
 
 } // namespace
 
+namespace {
+
+// "2.0" -> (2, 0); false unless it is <major>.<minor> in digits.
+bool parse_version(const std::string& text, long& major, long& minor) {
+    const std::size_t dot = text.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 >= text.size() || text.size() > 16) {
+        return false;
+    }
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (i != dot && !(text[i] >= '0' && text[i] <= '9')) {
+            return false;
+        }
+    }
+    major = std::stol(text.substr(0, dot));
+    minor = std::stol(text.substr(dot + 1));
+    return true;
+}
+
+} // namespace
+
+Status validate_asset(const tinygltf::Model& model) {
+    long major = 0, minor = 0;
+    const std::string& version = model.asset.version;
+    if (!parse_version(version, major, minor)) {
+        return Error{"asset.version is \"" + version + "\", expected \"<major>.<minor>\" such as \"2.0\""};
+    }
+    if (major != 2) {
+        return Error{"asset.version is \"" + version +
+                     "\": glTF major version " + std::to_string(major) +
+                     " is not supported, expected 2"};
+    }
+    if (!model.asset.minVersion.empty()) {
+        long min_major = 0, min_minor = 0;
+        if (!parse_version(model.asset.minVersion, min_major, min_minor) || min_major != 2 ||
+            min_minor > 0) {
+            return Error{"asset.minVersion is \"" + model.asset.minVersion +
+                         "\", but only glTF 2.0 is supported"};
+        }
+    }
+    return {};
+}
+
 Status validate_required_extensions(const tinygltf::Model& model) {
     if (!model.extensionsRequired.empty()) {
         return Error{"the file requires extension \"" + model.extensionsRequired.front() +
@@ -99,7 +141,7 @@ Status validate_images_textures_materials(const tinygltf::Model& model) {
 
 Status validate_model(const tinygltf::Model& model) {
     using Check = Status (*)(const tinygltf::Model&);
-    const Check checks[] = {validate_required_extensions, validate_buffer_views,
+    const Check checks[] = {validate_asset, validate_required_extensions, validate_buffer_views,
                             validate_accessors, validate_meshes, validate_images_textures_materials,
                             validate_nodes, validate_scenes, validate_cameras};
     for (Check check : checks) {

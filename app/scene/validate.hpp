@@ -22,6 +22,9 @@ frustum::Status validate_accessors(const tinygltf::Model& model);
 // index accessors, material indices, morph-target accessor indices.
 frustum::Status validate_meshes(const tinygltf::Model& model);
 
+// validate.cpp: asset.version (major 2; minVersion at most 2.0).
+frustum::Status validate_asset(const tinygltf::Model& model);
+
 // validate.cpp: extensionsRequired (none is supported), images (decoded
 // size), textures and material texture indices.
 frustum::Status validate_required_extensions(const tinygltf::Model& model);

@@ -1,5 +1,6 @@
 #include "validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -96,23 +97,48 @@ Status validate_forest(const tinygltf::Model& model) {
             parent[child] = n;
         }
     }
-    // With one parent each, a node lies on or below a cycle exactly when
-    // walking up from it takes more than node_count steps.
+    // With one parent each, the nodes a walk down from the roots does not
+    // reach are exactly those on or below a cycle: O(nodes) in all.
+    std::vector<bool> reached(static_cast<std::size_t>(node_count), false);
+    std::vector<int> stack;
     for (int n = 0; n < node_count; ++n) {
-        int ancestor = n;
-        int steps = 0;
-        while (parent[ancestor] != -1 && steps <= node_count) {
-            ancestor = parent[ancestor];
-            ++steps;
+        if (parent[n] == -1) {
+            stack.push_back(n);
         }
-        if (steps > node_count) { // `ancestor` is now on the cycle: print it
-            std::string cycle = std::to_string(ancestor);
-            for (int at = parent[ancestor]; at != ancestor; at = parent[at]) {
-                cycle = std::to_string(at) + " -> " + cycle;
-            }
-            return Error{"the node graph has a cycle (parent -> child): " + std::to_string(ancestor) +
-                         " -> " + cycle};
+    }
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        reached[static_cast<std::size_t>(n)] = true;
+        for (int child : model.nodes[n].children) {
+            stack.push_back(child);
         }
+    }
+    for (int n = 0; n < node_count; ++n) {
+        if (reached[static_cast<std::size_t>(n)]) {
+            continue;
+        }
+        // Walk up until a node repeats: that node is on the cycle.
+        std::vector<bool> seen(static_cast<std::size_t>(node_count), false);
+        int on_cycle = n;
+        while (!seen[static_cast<std::size_t>(on_cycle)]) {
+            seen[static_cast<std::size_t>(on_cycle)] = true;
+            on_cycle = parent[on_cycle];
+        }
+        // The message shows at most kShown links of the cycle.
+        constexpr int kShown = 8;
+        std::vector<int> cycle{on_cycle};
+        for (int at = parent[on_cycle]; at != on_cycle; at = parent[at]) {
+            cycle.push_back(at);
+        }
+        std::string path;
+        const int length = static_cast<int>(cycle.size());
+        for (int i = 0; i < std::min(length, kShown); ++i) {
+            path += std::to_string(cycle[static_cast<std::size_t>(length - 1 - i)]) + " -> ";
+        }
+        path += length > kShown ? "..." : std::to_string(cycle.back());
+        return Error{"the node graph has a cycle of " + std::to_string(length) +
+                     (length == 1 ? " node" : " nodes") + " (parent -> child): " + path};
     }
     return {};
 }

@@ -60,6 +60,9 @@ private:
     }
 
     json parse_value(int depth) {
+        if (++values_ > kMaxJsonValues) {
+            fail("the document holds more than " + std::to_string(kMaxJsonValues) + " values");
+        }
         switch (peek()) {
         case '{': return parse_object(depth + 1);
         case '[': return parse_array(depth + 1);
@@ -355,6 +358,7 @@ private:
 
     std::string_view text_;
     std::size_t pos_ = 0;
+    std::size_t values_ = 0;
 };
 
 } // namespace

@@ -9,6 +9,8 @@
 //   - a key repeated in one object is an error (nlohmann keeps the last one
 //     silently, which would hide a typo in a golden file);
 //   - nesting is limited to kMaxJsonDepth (no stack overflow on "[[[[...");
+//   - at most kMaxJsonValues values (the tree costs ~100 B per value, so a
+//     64 MiB document of "{}" would otherwise build a 2 GB tree);
 //   - strings must be valid UTF-8 (the id is echoed back verbatim).
 // Everything else (NaN, Infinity, comments, trailing commas, a BOM, leading
 // zeros, single quotes) is malformed, as in RFC 8259.
@@ -18,11 +20,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <string_view>
 
 namespace vectors {
 
 constexpr int kMaxJsonDepth = 64;
+constexpr std::size_t kMaxJsonValues = 1000000;
 
 // Errors read "invalid JSON at line 3, column 7: expected ',' or '}'"
 // (lines and columns count from 1; columns in bytes).

@@ -144,6 +144,19 @@ Result<T> k_near_through(const SideRows<T>& rows, const Vec3<T>& far_point, Dept
                                   "point=" + detail::vector_text(far_point) + " w=" + detail::number(in_front) +
                                       " near_distance=" + detail::number(beyond_near));
     }
+    // K_n grows as w / near_distance (eq. 12): a far point on the near plane
+    // up to rounding would give entries of 1e13 and a meaningless depth. Both
+    // are lengths of the frustum's own scale (w: the depth from the eye, or
+    // the half-size of an orthographic box), so their ratio is refused past
+    // 1/sqrt(epsilon): 2896 in float, 6.7e7 in double.
+    const T max_ratio = T(1) / std::sqrt(std::numeric_limits<T>::epsilon());
+    if (!(in_front <= max_ratio * beyond_near)) {
+        return detail::error_text("from_planes",
+                                  "far point must lie clearly beyond the near plane (at least 1/" +
+                                      detail::number(max_ratio) + " of its depth w)",
+                                  "point=" + detail::vector_text(far_point) + " w=" + detail::number(in_front) +
+                                      " near_distance=" + detail::number(beyond_near));
+    }
     return std::abs(clip_z_span<T>(depth)) * in_front / beyond_near;
 }
 

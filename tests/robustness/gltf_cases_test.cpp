@@ -148,7 +148,7 @@ const std::vector<GltfCase>& gltf_cases() {
              with_image({{"uri", "data:image/png;base64," + base64(png_header(2, 2))}})(m);
          }, {"image 0: image is 2 x 2 pixels, the limit is 3 pixels"}},
         {"image bytes that are no image", with_image({{"uri", "data:image/png;base64," + base64("not an image")}}),
-         {"image 0: cannot decode the image header"}},
+         {"image 0: the image is neither PNG nor JPEG (first bytes 6E 6F 74)"}},
         {"camera yfov 0", edit([](Json& g) {
              g["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0}, {"znear", 0.1}}}}};
              g["nodes"][0]["camera"] = 0;
@@ -157,7 +157,7 @@ const std::vector<GltfCase>& gltf_cases() {
         {"node translation 1e39", edit([](Json& g) { g["nodes"][0]["translation"] = {1e39, 0, 0}; }),
          {"node 0 has a world transform too large for single precision"}},
         {"node is its own child", edit([](Json& g) { g["nodes"][0]["children"] = {0}; }),
-         {"the node graph has a cycle (parent -> child): 0 -> 0"}},
+         {"the node graph has a cycle of 1 node (parent -> child): 0 -> 0"}},
         {"GLB chunk length 2^32 - 1", text(glb_header(24, 0xffffffffu)), {"GLB chunk 0 length 4294967295"}},
         {"GLB length field 0", text(glb_header(0, 4)), {"GLB header length 0", "does not match the file size"}},
         {"file over the size limit", [](Model& m) {

@@ -93,6 +93,13 @@ const std::vector<MathCase>& math_cases() {
         {"from_planes far point behind the eye", [] {
              return error_of(from_planes(side_planes(), Vec3<D>(0, 0, 5), kZo));
          }, {"far point must be in front of the eye and beyond the near plane"}},
+        {"from_planes far point on the near plane up to rounding", [] {
+             const SidePlanes<D> p = side_planes();
+             const D length = glm::length(p.near.normal());
+             const Vec3<D> normal = p.near.normal() / length;
+             const Vec3<D> on_near = -(p.near.abcd.w / length) * normal;
+             return error_of(from_planes(p, on_near + 1e-12 * glm::length(on_near) * normal, kZo));
+         }, {"frustum::from_planes(): far point must lie clearly beyond the near plane"}},
         {"from_planes far point NaN", [] {
              return error_of(from_planes(side_planes(), Vec3<D>(kNaN, 0, -5), kZo));
          }, {"frustum::from_planes(): far point must be finite"}},

@@ -85,6 +85,10 @@ std::string slurp(const fs::path& path) {
         const rlimit limit{rlim_t(launch.file_size_limit_bytes), rlim_t(launch.file_size_limit_bytes)};
         if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(126);
     }
+    if (launch.address_space_limit_bytes >= 0) {
+        const rlimit limit{rlim_t(launch.address_space_limit_bytes), rlim_t(launch.address_space_limit_bytes)};
+        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
+    }
     ::signal(SIGXFSZ, launch.ignore_sigxfsz ? SIG_IGN : SIG_DFL);
     std::vector<char*> argv;
     argv.push_back(const_cast<char*>(program.c_str()));
@@ -106,10 +110,12 @@ Outcome run(const std::string& program, const Launch& launch) {
     REQUIRE(pid >= 0);
     if (pid == 0) exec_child(program, launch, in_path, out_path, err_path);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
+    rusage usage{};
+    while (::wait4(pid, &status, 0, &usage) < 0) {
         REQUIRE(errno == EINTR);
     }
     Outcome outcome;
+    outcome.peak_rss_kb = usage.ru_maxrss;
     if (WIFEXITED(status)) outcome.exit_status = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
     REQUIRE_MESSAGE(outcome.exit_status != 127, "cannot execute ", program);

@@ -42,12 +42,14 @@ struct Launch {
     long file_size_limit_bytes = -1; // RLIMIT_FSIZE for the child, -1: none
     bool ignore_sigxfsz = true;      // a write past the limit fails (EFBIG) instead of killing
     std::string cwd;                 // empty: the test's
+    long address_space_limit_bytes = -1; // RLIMIT_AS for the child (as prlimit --as), -1: none
 };
 
 struct Outcome {
     int exit_status = -1; // -1 when killed by a signal
     int signal = 0;
     std::string out, err; // out is empty when stdout_file was given
+    long peak_rss_kb = 0; // the child's maximum resident set (wait4 rusage)
 };
 
 // Runs `program` and waits for it (no shell).

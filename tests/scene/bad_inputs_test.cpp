@@ -240,7 +240,7 @@ const std::vector<BadInput>& bad_inputs() {
          }), {"tinygltf", "image[0] bufferView \"9\" not found"}},
         {"image bytes not an image", edit("BoxTextured", [](Json& g) {
              g["images"][0]["uri"] = "data:image/png;base64," + scene_test::base64_encode(Bytes(64, 7));
-         }), {"image 0: cannot decode the image header"}},
+         }), {"image 0: the image is neither PNG nor JPEG (first bytes 07 07 07)"}},
         {"image over the pixel limit", [](Fixture& f) {
              f.options.max_image_pixels = 1000;
              scene_test::write_text(f.model, scene_test::read_json(scene_test::sample_path("BoxTextured")).dump());
@@ -256,9 +256,9 @@ const std::vector<BadInput>& bad_inputs() {
 
         // --- nodes and scenes
         {"node cycle", edit("Box", [](Json& g) { g["nodes"][1]["children"] = {0}; }),
-         {"the node graph has a cycle (parent -> child): 1 -> 0 -> 1"}},
+         {"the node graph has a cycle of 2 nodes (parent -> child): 1 -> 0 -> 1"}},
         {"node is its own child", edit("Box", [](Json& g) { g["nodes"][0]["children"] = {0, 1}; }),
-         {"the node graph has a cycle (parent -> child): 0 -> 0"}},
+         {"the node graph has a cycle of 1 node (parent -> child): 0 -> 0"}},
         {"child index out of range", edit("Box", [](Json& g) { g["nodes"][0]["children"] = {7}; }),
          {"node 0 has child 7 but the file has 2 nodes"}},
         {"node with two parents", edit("Box", [](Json& g) {
