@@ -74,6 +74,12 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
         return apply_curved_option(r.curved, name, value);
     } else if (name == "--lens-grid" || name == "--lens-power") {
         return apply_lens_option(r, name, value);
+    } else if (name == "--msaa") {
+        const auto samples = parse_count(value, kMaxMsaaOption);
+        if (!samples) {
+            return usage(kMsaaExpected + quoted);
+        }
+        r.msaa_samples = *samples;
     } else {
         return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
     }
@@ -83,7 +89,7 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
 bool takes_value(std::string_view name) {
     for (std::string_view known : {"--scene", "--camera", "--effect", "--tiles", "--size", "--backend", "--depth",
                                    "--mirror", "--out", "--patches", "--sagitta", "--cap", "--lens-grid",
-                                   "--lens-power"}) {
+                                   "--lens-power", "--msaa"}) {
         if (name == known) {
             return true;
         }
@@ -230,6 +236,8 @@ std::string help_text() {
            "                      mirror's second side)\n"
            "  --lens-grid N       lens effect: N x N tiles, 1..256 (default 16)\n"
            "  --lens-power P      lens effect: p of eq. 34, in (0, 8] (default 2; 1 = no lens)\n"
+           "  --msaa N            multisampled anti-aliasing with N samples per pixel, 1 = off\n"
+           "                      (default 4, or the most the context offers when fewer)\n"
            "  --out DIR           output folder, created if missing (default out)\n"
            "  --verbose           print the GL context and its KHR_debug messages\n"
            "\n"

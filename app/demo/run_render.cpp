@@ -74,8 +74,14 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     if (!renderer) {
         return runtime(renderer.error());
     }
+    auto samples = gl::choose_samples(*fn, request.msaa_samples);
+    if (!samples) {
+        return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
+    }
     if (request.verbose) {
         reporter.note("context: " + gl::summary((*context)->describe()));
+        reporter.note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
+                      std::to_string(gl::max_samples(*fn)) + ")");
         reporter.note(depth_summary(*renderer, request.depth));
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
@@ -90,6 +96,7 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     options.lens_power = request.lens_power;
     options.tile_columns = request.tile_columns;
     options.tile_rows = request.tile_rows;
+    options.msaa_samples = *samples;
 
     const bool several = request.effects.size() > 1;
     const std::size_t total = request.effects.size() + (several ? 1 : 0);

@@ -29,6 +29,7 @@ struct Material {
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::Opaque;
     float alpha_cutoff = 0.5f; // MASK only
+    bool unlit = false;        // KHR_materials_unlit: base colour only, no lighting
 };
 
 // glTF primitive modes, numbered as in the glTF spec (and GL).
