@@ -1,5 +1,6 @@
 #include "uri_check.hpp"
 
+#include "extensions.hpp"
 #include "foreign_message.hpp"
 
 #include <nlohmann/json.hpp>
@@ -122,6 +123,9 @@ frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes) {
     }
     if (!root.is_object()) {
         return frustum::Error{"the JSON root is not an object"};
+    }
+    if (frustum::Status status = check_required_extensions(root); !status) {
+        return status;
     }
     if (frustum::Status status = check_uris_of(root, "buffers", "buffer"); !status) {
         return status;

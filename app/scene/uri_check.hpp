@@ -15,7 +15,8 @@ namespace scene::detail {
 std::string uri_problem(const std::string& uri);
 
 // Parses the JSON (call check_json_depth first) and checks that the root is an
-// object and that every buffers[i].uri and images[i].uri is acceptable.
+// object, that every extension in extensionsRequired is supported
+// (extensions.hpp) and that every buffers[i].uri and images[i].uri is acceptable.
 frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes);
 
 } // namespace scene::detail
