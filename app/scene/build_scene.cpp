@@ -164,11 +164,9 @@ Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::
     primitive.mode = static_cast<PrimitiveMode>(source.mode);
     primitive.material = source.material;
     const TexcoordUse use = source.material >= 0 ? uses[static_cast<std::size_t>(source.material)] : TexcoordUse{};
+    // A set the primitive lacks leaves texcoords empty: the renderer then
+    // reads the texture at (0, 0), as it always did for a missing TEXCOORD_0.
     const std::string texcoord = "TEXCOORD_" + std::to_string(use.set);
-    if (use.textured && source.attributes.count(texcoord) == 0) {
-        return Error{where + " uses material " + std::to_string(source.material) +
-                     ", whose baseColorTexture reads " + texcoord + ", but the primitive has no " + texcoord};
-    }
     Status reads[] = {
         read_vectors<3>(model, source, "POSITION", primitive.positions),
         read_vectors<3>(model, source, "NORMAL", primitive.normals),

@@ -53,7 +53,8 @@ struct Primitive {
     // The TEXCOORD_<n> set the material's base colour texture reads
     // (textureInfo.texCoord, overridden by KHR_texture_transform's texCoord),
     // with KHR_texture_transform's offset, rotation and scale applied;
-    // TEXCOORD_0 for an untextured material; empty: no texture lookup.
+    // TEXCOORD_0 for an untextured material; empty (also when the primitive
+    // lacks the set): the renderer reads the texture at uv (0, 0).
     std::vector<glm::vec2> texcoords;
     std::vector<std::uint32_t> indices; // always filled (0..n-1 when the file had none)
     int material = -1; // index into Scene::materials, -1 = default material
