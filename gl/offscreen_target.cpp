@@ -47,11 +47,15 @@ frustum::Status check_size(const Functions& fn, const OffscreenTargetOptions& op
 }
 
 frustum::Result<Renderbuffer> make_renderbuffer(const Functions& fn, GLenum format, int width,
-                                                int height) {
+                                                int height, int samples = 1) {
     auto renderbuffer = Renderbuffer::create(fn);
     if (renderbuffer) {
         fn.BindRenderbuffer(GL_RENDERBUFFER, renderbuffer->id());
-        fn.RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+        if (samples > 1) {
+            fn.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+        } else {
+            fn.RenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+        }
     }
     return renderbuffer;
 }
@@ -71,21 +75,61 @@ frustum::Result<Texture> make_color_texture(const Functions& fn, int width, int 
 
 } // namespace
 
+int max_samples(const Functions& fn) {
+    GLint max = 0;
+    fn.GetIntegerv(GL_MAX_SAMPLES, &max);
+    return std::max(max, 1);
+}
+
+frustum::Result<int> choose_samples(const Functions& fn, int requested) {
+    const int max = max_samples(fn);
+    if (requested == kAutomaticSamples) {
+        return std::min(kDefaultSamples, max);
+    }
+    if (requested < 1 || requested > max) {
+        return frustum::Error{"gl::choose_samples(): " + std::to_string(requested) +
+                              " samples requested, but this context offers 1 to " + std::to_string(max) +
+                              " (GL_MAX_SAMPLES=" + std::to_string(max) + ")"};
+    }
+    return requested;
+}
+
 frustum::Result<OffscreenTarget> OffscreenTarget::create(const Functions& fn,
                                                          const OffscreenTargetOptions& options) {
     if (auto size = check_size(fn, options); !size) {
         return frustum::Error{size.error()};
     }
+    if (options.samples < 1 || options.samples > max_samples(fn)) {
+        return frustum::Error{std::string(kCreate) + ": samples must be 1.." + std::to_string(max_samples(fn)) +
+                              " (GL_MAX_SAMPLES), got " + std::to_string(options.samples)};
+    }
     OffscreenTarget target;
     target.fn_ = &fn;
     target.width_ = options.width;
     target.height_ = options.height;
+    target.samples_ = options.samples;
     auto framebuffer = Framebuffer::create(fn);
     if (!framebuffer) {
         return frustum::Error{framebuffer.error()};
     }
     target.framebuffer_ = std::move(*framebuffer);
-    fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
+    if (target.samples_ > 1) {
+        // The drawing framebuffer: multisampled colour (and depth, below).
+        auto resolve = Framebuffer::create(fn);
+        auto color = make_renderbuffer(fn, GL_RGBA8, options.width, options.height, target.samples_);
+        if (!resolve || !color) {
+            return frustum::Error{!resolve ? resolve.error() : color.error()};
+        }
+        target.resolve_framebuffer_ = std::move(*resolve);
+        target.multisample_color_ = std::move(*color);
+        fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
+        fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                   target.multisample_color_.id());
+        // The single-sample colour below goes to the resolve framebuffer.
+        fn.BindFramebuffer(GL_FRAMEBUFFER, target.resolve_framebuffer_.id());
+    } else {
+        fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
+    }
 
     if (options.color == ColorStorage::Texture) {
         auto texture = make_color_texture(fn, options.width, options.height);
@@ -104,9 +148,15 @@ frustum::Result<OffscreenTarget> OffscreenTarget::create(const Functions& fn,
         fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                                    target.color_renderbuffer_.id());
     }
+    if (target.samples_ > 1) {
+        if (auto complete = check_framebuffer_complete(fn, GL_FRAMEBUFFER, kCreate); !complete) {
+            return frustum::Error{complete.error()};
+        }
+        fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
+    }
     const GLenum depth_format =
         options.depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F;
-    auto depth = make_renderbuffer(fn, depth_format, options.width, options.height);
+    auto depth = make_renderbuffer(fn, depth_format, options.width, options.height, target.samples_);
     if (!depth) {
         return frustum::Error{depth.error()};
     }
@@ -129,8 +179,22 @@ void OffscreenTarget::bind() const {
     fn_->Viewport(0, 0, width_, height_);
 }
 
-frustum::Result<image::Image> OffscreenTarget::read_rgba8() const {
+void OffscreenTarget::resolve() const {
+    if (samples_ <= 1) {
+        return;
+    }
+    fn_->BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+    fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    fn_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_framebuffer_.id());
+    fn_->Disable(GL_SCISSOR_TEST); // the blit is scissored too
+    fn_->BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     bind();
+}
+
+frustum::Result<image::Image> OffscreenTarget::read_rgba8() const {
+    resolve();
+    fn_->BindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer().id());
+    fn_->Viewport(0, 0, width_, height_);
     fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
     fn_->BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     fn_->PixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -1,5 +1,9 @@
 // A framebuffer object to render into: RGBA8 colour (renderbuffer or
-// texture) plus a depth renderbuffer, readable as an image::Image.
+// texture) plus a depth renderbuffer, readable as an image::Image. With
+// samples > 1 the drawing happens in multisampled colour and depth
+// renderbuffers, and resolve() blits the colour into the single-sample
+// texture or renderbuffer that color_texture(), read_rgba8() and
+// resolved_framebuffer() see (multisampled anti-aliasing).
 #pragma once
 
 #include "gl/objects.hpp"
@@ -17,7 +21,18 @@ struct OffscreenTargetOptions {
     int height = 0;
     ColorStorage color = ColorStorage::Renderbuffer;
     DepthFormat depth = DepthFormat::Depth24;
+    int samples = 1; // 1: no multisampling; 2..GL_MAX_SAMPLES: MSAA (choose_samples())
 };
+
+// The sample count to draw with: `requested` when 1 <= requested <=
+// GL_MAX_SAMPLES, kAutomaticSamples: 4 or the context's maximum when that
+// is lower (1 when it has none). Errors name both numbers:
+// "gl::choose_samples(): 8 samples requested, but this context offers at most 4 (GL_MAX_SAMPLES)".
+inline constexpr int kAutomaticSamples = 0;
+inline constexpr int kDefaultSamples = 4;
+frustum::Result<int> choose_samples(const Functions& fn, int requested);
+// GL_MAX_SAMPLES, at least 1.
+int max_samples(const Functions& fn);
 
 class OffscreenTarget {
 public:
@@ -31,14 +46,25 @@ public:
     // Binds the framebuffer for drawing and reading and sets the viewport to all of it.
     void bind() const;
 
+    // samples > 1: blits the multisampled colour into the single-sample one
+    // (the resolve) and binds the drawing framebuffer again. Call it after
+    // drawing, before color_texture() or resolved_framebuffer() is read.
+    // Leaves the scissor test off. samples == 1: nothing to do.
+    void resolve() const;
+
     int width() const { return width_; }
     int height() const { return height_; }
+    int samples() const { return samples_; }
+    // The framebuffer drawn into (multisampled when samples() > 1).
     const Framebuffer& framebuffer() const { return framebuffer_; }
-    // Empty unless created with ColorStorage::Texture.
+    // The single-sample framebuffer holding the resolved colour: the same as
+    // framebuffer() when samples() == 1.
+    const Framebuffer& resolved_framebuffer() const { return samples_ > 1 ? resolve_framebuffer_ : framebuffer_; }
+    // Empty unless created with ColorStorage::Texture; the resolved colour.
     const Texture& color_texture() const { return color_texture_; }
 
-    // The colour attachment, rows top to bottom (GL's start at the bottom).
-    // Binds this target and resets the pixel-pack state it relies on.
+    // The colour attachment (resolved first), rows top to bottom (GL's start
+    // at the bottom). Binds this target and resets the pixel-pack state it relies on.
     frustum::Result<image::Image> read_rgba8() const;
 
 private:
@@ -47,7 +73,10 @@ private:
     const Functions* fn_ = nullptr;
     int width_ = 0;
     int height_ = 0;
+    int samples_ = 1;
     Framebuffer framebuffer_;
+    Framebuffer resolve_framebuffer_; // samples_ > 1 only
+    Renderbuffer multisample_color_;  // samples_ > 1 only
     Texture color_texture_;
     Renderbuffer color_renderbuffer_;
     Renderbuffer depth_renderbuffer_;

@@ -9,7 +9,8 @@ namespace gl {
 
 frustum::Status blit_to_window(const Functions& fn, const OffscreenTarget& source, const WindowRect& destination) {
     const bool same_size = destination.width == source.width() && destination.height == source.height();
-    fn.BindFramebuffer(GL_READ_FRAMEBUFFER, source.framebuffer().id());
+    source.resolve();
+    fn.BindFramebuffer(GL_READ_FRAMEBUFFER, source.resolved_framebuffer().id());
     fn.ReadBuffer(GL_COLOR_ATTACHMENT0);
     fn.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     fn.Disable(GL_SCISSOR_TEST);

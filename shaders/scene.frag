@@ -2,8 +2,10 @@
 // Base colour (factor x vertex colour x texture) lit by one directional
 // light plus ambient, in linear space, written sRGB-encoded to an RGBA8
 // target. The program is also built with "#define CLIP_PLANE 1": a world-space
-// clip plane by fragment discard. It is a separate program because a shader
-// that may discard loses early depth testing on tile-based mobile GPUs.
+// clip plane by fragment discard, and with "#define ALPHA_MASK 1": glTF
+// alphaMode MASK, discarding where alpha < alphaCutoff. They are separate
+// programs because a shader that may discard loses early depth testing on
+// tile-based mobile GPUs. alphaMode BLEND writes alpha for the blend unit.
 precision highp float;
 
 in vec3 v_world;
@@ -20,6 +22,10 @@ uniform float u_flat_normal_sign;        // -1 when the view is mirrored (pair f
 uniform vec3 u_to_light;                 // unit vector towards the light, world space
 uniform float u_ambient;
 uniform float u_diffuse;
+uniform bool u_blend;                    // alphaMode BLEND: output alpha = base alpha, else 1
+#ifdef ALPHA_MASK
+uniform float u_alpha_cutoff;            // alphaMode MASK: fragments with alpha below it are cut
+#endif
 #ifdef CLIP_PLANE
 uniform vec4 u_clip_plane;               // world (a, b, c, d): keeps a x + b y + c z + d >= 0
 #endif
@@ -45,6 +51,11 @@ void main() {
     if (u_has_texture) {
         base *= texture(u_base_color_texture, v_texcoord);
     }
+#ifdef ALPHA_MASK
+    if (base.a < u_alpha_cutoff) {
+        discard;
+    }
+#endif
     vec3 color = base.rgb;
     if (u_shading != 2) {
         vec3 n;
@@ -58,5 +69,6 @@ void main() {
         }
         color *= u_ambient + u_diffuse * max(dot(n, u_to_light), 0.0);
     }
-    o_color = vec4(linear_to_srgb(clamp(color, 0.0, 1.0)), 1.0); // opaque (glTF alphaMode OPAQUE)
+    // Blending happens on the sRGB-encoded values (the target is RGBA8).
+    o_color = vec4(linear_to_srgb(clamp(color, 0.0, 1.0)), u_blend ? clamp(base.a, 0.0, 1.0) : 1.0);
 }

@@ -77,6 +77,12 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
     } else if (name == "--max-memory-mb" || name == "--max-nodes" || name == "--max-depth" ||
                name == "--max-drawn-vertices") {
         return apply_budget_option(r.budget, name, value);
+    } else if (name == "--msaa") {
+        const auto samples = parse_count(value, kMaxMsaaOption);
+        if (!samples) {
+            return usage(kMsaaExpected + quoted);
+        }
+        r.msaa_samples = *samples;
     } else {
         return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
     }
@@ -86,8 +92,8 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
 bool takes_value(std::string_view name) {
     for (std::string_view known : {"--scene", "--camera", "--effect", "--tiles", "--size", "--backend", "--depth",
                                    "--mirror", "--out", "--patches", "--sagitta", "--cap", "--lens-grid",
-                                   "--lens-power", "--max-memory-mb", "--max-nodes", "--max-depth",
-                                   "--max-drawn-vertices"}) {
+                                   "--lens-power", "--msaa", "--max-memory-mb", "--max-nodes",
+                                   "--max-depth", "--max-drawn-vertices"}) {
         if (name == known) {
             return true;
         }
@@ -284,6 +290,8 @@ std::string help_text() {
            "  --lens-grid N       lens effect: N x N tiles, 1..128 (default 16)\n"
            "  --lens-power P      lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens;\n"
            "                      stronger powers make tiles degenerate in single precision)\n"
+           "  --msaa N            multisampled anti-aliasing with N samples per pixel, 1 = off\n"
+           "                      (default 4, or the most the context offers when fewer)\n"
            "  --out DIR           output folder, created if missing (default out)\n"
            "  --verbose           print the GL context and its KHR_debug messages\n"
            "  --max-memory-mb N   budget for the decoded scene (vertices, indices, images,\n"

@@ -4,7 +4,7 @@
 //                       [--depth zero_to_one|minus_one_to_one]
 //                       [--mirror oblique|rectangle|reflect_only] [--out DIR] [--verbose]
 //                       [--patches N] [--sagitta M] [--cap sphere|cylinder]
-//                       [--lens-grid N] [--lens-power P]
+//                       [--lens-grid N] [--lens-power P] [--msaa N]
 //   frustum-demo curved-report [options]   (demo/curved_report.hpp)
 //   frustum-demo lens-report [options]     (demo/lens_report.hpp)
 //   frustum-demo nonaffine-report [options] (demo/nonaffine_report.hpp)
@@ -14,6 +14,7 @@
 #include "demo/failure.hpp"
 
 #include <gl/context.hpp>
+#include <gl/offscreen_target.hpp>
 #include <render/curved_mirror.hpp>
 #include <render/depth_policy.hpp>
 #include <render/effect.hpp>
@@ -44,6 +45,7 @@ struct RenderRequest {
     // --max-memory-mb (also bounds the run's output images), --max-nodes,
     // --max-depth, --max-drawn-vertices.
     scene::Budget budget;
+    int msaa_samples = gl::kAutomaticSamples; // --msaa N; default 4 or the context's maximum
 };
 
 struct HelpRequest {};

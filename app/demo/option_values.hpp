@@ -14,6 +14,11 @@ std::optional<int> parse_count(std::string_view text, int max);
 // "640x360" -> (640, 360): two counts in [1, max] joined by 'x'.
 std::optional<std::pair<int, int>> parse_pair(std::string_view text, int max);
 
+// --msaa N of render and window: parse_count(text, kMaxMsaaOption); the
+// context's own maximum (GL_MAX_SAMPLES) is checked once it exists.
+inline constexpr int kMaxMsaaOption = 64;
+inline constexpr const char* kMsaaExpected = "--msaa must be a sample count in 1..64 (1 = off), got ";
+
 // The showcase scene in FRUSTUM_ASSETS_DIR (compiled in at build time).
 std::string default_scene();
 

@@ -89,8 +89,14 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     if (!renderer) {
         return runtime(renderer.error());
     }
+    auto samples = gl::choose_samples(*fn, request.msaa_samples);
+    if (!samples) {
+        return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
+    }
     if (request.verbose) {
         reporter.note("context: " + gl::summary((*context)->describe()));
+        reporter.note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
+                      std::to_string(gl::max_samples(*fn)) + ")");
         reporter.note(depth_summary(*renderer, request.depth));
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
@@ -105,6 +111,7 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     options.lens_power = request.lens_power;
     options.tile_columns = request.tile_columns;
     options.tile_rows = request.tile_rows;
+    options.msaa_samples = *samples;
 
     const bool several = request.effects.size() > 1;
     const std::size_t total = request.effects.size() + (several ? 1 : 0);

@@ -61,6 +61,12 @@ std::optional<Failure> apply(WindowRequest& r, std::string_view name, const std:
         if (!r.frames) {
             return usage("--frames must be 1.." + std::to_string(kMaxFrames) + ", got " + quoted);
         }
+    } else if (name == "--msaa") {
+        const auto samples = parse_count(value, kMaxMsaaOption);
+        if (!samples) {
+            return usage(kMsaaExpected + quoted);
+        }
+        r.msaa_samples = *samples;
     } else if (name == "--screenshot") {
         if (value.empty()) {
             return usage("--screenshot needs a file, got ''");
@@ -74,7 +80,7 @@ std::optional<Failure> apply(WindowRequest& r, std::string_view name, const std:
 
 bool takes_value(std::string_view name) {
     for (std::string_view known :
-         {"--scene", "--camera", "--effect", "--size", "--tiles", "--mirror", "--frames", "--screenshot"}) {
+         {"--scene", "--camera", "--effect", "--size", "--tiles", "--mirror", "--frames", "--screenshot", "--msaa"}) {
         if (name == known) {
             return true;
         }
@@ -127,6 +133,8 @@ std::string window_help_text() {
            "  --mirror M          oblique | rectangle | reflect_only (default oblique)\n"
            "  --inset             start with the frustum view inset shown (key F)\n"
            "  --help-overlay      start with the key help shown (key H)\n"
+           "  --msaa N            multisampled anti-aliasing, N samples per pixel, 1 = off\n"
+           "                      (default 4, or the most the context offers when fewer)\n"
            "  --frames N          draw N frames, then exit (for scripts and tests)\n"
            "  --screenshot FILE   with --frames: save frame N as PNG (what the window shows)\n"
            "\n"

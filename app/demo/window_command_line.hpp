@@ -27,6 +27,7 @@ struct WindowRequest {
     bool help_overlay = false; // start with the key help shown
     std::optional<int> frames;             // draw this many frames, then exit
     std::optional<std::string> screenshot; // with frames: the last frame as PNG
+    int msaa_samples = 0; // --msaa N; 0 = gl::kAutomaticSamples: 4 or the context's maximum
 };
 
 // args[0] is "window". Usage errors are ExitStatus::UsageError with a

@@ -4,6 +4,7 @@
 #include <gl/glfw_egl_window.hpp>
 #include <gl/window_framebuffer.hpp>
 #include <image/png.hpp>
+#include <gl/offscreen_target.hpp>
 #include <render/camera.hpp>
 #include <render/renderer.hpp>
 #include <scene/load_gltf.hpp>
@@ -13,7 +14,6 @@
 #include <window/frame_painter.hpp>
 #include <window/mirror_pose.hpp>
 #include <window/orbit_camera.hpp>
-#include <window/window_cameras.hpp>
 
 #include <chrono>
 #include <optional>
@@ -62,6 +62,9 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
     if (!fn) {
         return runtime(fn.error());
     }
+    if (auto samples = gl::choose_samples(*fn, request.msaa_samples); !samples) {
+        return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
+    }
     session->fn = std::make_unique<gl::Functions>(*fn);
     auto renderer = render::Renderer::create(*session->window, *session->fn, session->scene);
     if (!renderer) {
@@ -84,6 +87,7 @@ window::ViewerState initial_state(const WindowRequest& request) {
     state.mirror_method = request.mirror;
     state.show_help = request.help_overlay;
     state.show_inset = request.inset;
+    state.msaa_samples = request.msaa_samples;
     return state;
 }
 
@@ -129,7 +133,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request) {
             continue;
         }
         if (!cameras) {
-            auto made = window::window_cameras(s.scene, s.camera_index, size.width_px, size.height_px);
+            auto made = render::make_cameras(s.scene, s.camera_index, size.width_px, size.height_px);
             if (!made) {
                 return runtime(made.error());
             }

@@ -55,15 +55,19 @@ scene::Bounds including(scene::Bounds bounds, const glm::vec3& point) {
 
 } // namespace
 
-frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float aspect_when_unset) {
+frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float image_aspect) {
     const auto depth = frustum::DepthRange::ZeroToOne;
+    // The image's aspect wins over the camera's own (glTF 2.0, "Projection
+    // Matrices": the viewport's aspect is used; otherwise the picture is
+    // stretched): the vertical extent (yfov, ymag) is kept and the
+    // horizontal one follows, xmag = ymag * image_aspect.
     frustum::Result<frustum::MatrixPair<float>> projection =
         frustum::Error{"render::camera_pair(): camera '" + camera.name + "': orthographic camera without zfar"};
     if (camera.kind == scene::Camera::Kind::Perspective) {
-        projection = frustum::perspective<float>(camera.yfov_rad, camera.aspect.value_or(aspect_when_unset),
-                                                 camera.znear_m, camera.zfar_m, depth);
+        projection = frustum::perspective<float>(camera.yfov_rad, image_aspect, camera.znear_m, camera.zfar_m, depth);
     } else if (camera.zfar_m) {
-        projection = frustum::orthographic<float>(-camera.xmag, camera.xmag, -camera.ymag, camera.ymag,
+        const float half_width = camera.ymag * image_aspect;
+        projection = frustum::orthographic<float>(-half_width, half_width, -camera.ymag, camera.ymag,
                                                   camera.znear_m, *camera.zfar_m, depth);
     }
     if (!projection) {

@@ -17,9 +17,11 @@ namespace render {
 // projection (frustum::perspective / orthographic) composed with the view.
 // The view is the closed-form inverse of the rigid camera_to_world [R | t]:
 // [R^T | -R^T t] (RigidTransform::from_rotation_translation), so nothing is
-// inverted numerically. aspect_when_unset (width / height of the image) is
-// used when the glTF camera gives no aspect ratio.
-frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float aspect_when_unset);
+// inverted numerically. image_aspect (width / height of the image) replaces
+// the camera's own aspect ratio, so nothing is stretched: a perspective
+// camera keeps its yfov, an orthographic one its ymag (xmag becomes
+// ymag * image_aspect). The window and `render` both come through here.
+frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float image_aspect);
 
 // A perspective camera, vertical field of view 45 degrees, looking at the
 // centre of `bounds` from the direction `from_direction` (need not be unit,

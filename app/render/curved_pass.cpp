@@ -90,7 +90,7 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CurvedMirror&
 frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const CurvedPlan& plan,
                                                   const glm::ivec2& tile, int mirror_instance) {
     auto atlas = gl::OffscreenTarget::create(
-        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::Depth24});
+        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::Depth24, ctx.samples});
     if (!atlas) {
         return frustum::Error{kDraw + std::string("atlas: ") + atlas.error()};
     }
@@ -108,6 +108,7 @@ frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const 
         }
     }
     fn.Disable(GL_SCISSOR_TEST);
+    atlas->resolve();
     return atlas;
 }
 

@@ -106,6 +106,14 @@ frustum::Result<GpuPrimitive> upload_primitive(const gl::Functions& fn, const sc
     out.has_normals = layout.normals;
     out.has_colors = layout.colors;
     out.has_texcoords = layout.texcoords;
+    if (!p.positions.empty()) {
+        glm::vec3 low = p.positions.front(), high = p.positions.front();
+        for (const glm::vec3& position : p.positions) {
+            low = glm::min(low, position);
+            high = glm::max(high, position);
+        }
+        out.center = 0.5f * (low + high);
+    }
 
     fn.BindVertexArray(out.vertex_array.id());
     const std::vector<float> vertices = interleave(p, layout);
@@ -174,7 +182,8 @@ frustum::Result<GpuScene> GpuScene::upload(const gl::Functions& fn, const scene:
         gpu.textures_.push_back(std::move(*texture));
     }
     for (const scene::Material& m : scene.materials) {
-        gpu.materials_.push_back(GpuMaterial{m.base_color_factor, m.base_color_texture, m.double_sided});
+        gpu.materials_.push_back(
+            GpuMaterial{m.base_color_factor, m.base_color_texture, m.double_sided, m.alpha_mode, m.alpha_cutoff, m.unlit});
     }
     for (const scene::Mesh& mesh : scene.meshes) {
         GpuMesh& gpu_mesh = gpu.meshes_.emplace_back();

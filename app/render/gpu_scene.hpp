@@ -34,6 +34,7 @@ struct GpuPrimitive {
     bool has_normals = false;
     bool has_colors = false;
     bool has_texcoords = false;
+    glm::vec3 center{0.0f}; // of the positions' bounding box, object space: sorts blended primitives
 };
 
 using GpuMesh = std::vector<GpuPrimitive>;
@@ -42,6 +43,9 @@ struct GpuMaterial {
     glm::vec4 base_color_factor{1.0f};
     int texture = -1; // into GpuScene::textures(), -1 = none
     bool double_sided = false;
+    scene::AlphaMode alpha_mode = scene::AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f; // MASK
+    bool unlit = false;        // KHR_materials_unlit
 };
 
 class GpuScene {

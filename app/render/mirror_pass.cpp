@@ -18,7 +18,8 @@ namespace {
 frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, const ReflectionView& view,
                                                        int mirror_instance) {
     auto target = gl::OffscreenTarget::create(
-        ctx.fn, {view.texture_width_px, view.texture_height_px, gl::ColorStorage::Texture, gl::DepthFormat::Depth24});
+        ctx.fn, {view.texture_width_px, view.texture_height_px, gl::ColorStorage::Texture, gl::DepthFormat::Depth24,
+                 ctx.samples});
     if (!target) {
         return frustum::Error{"render::draw_mirror_frame(): reflection texture: " + target.error()};
     }
@@ -26,6 +27,7 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
     SceneDraw draw{view.pair};
     draw.skip_instance = mirror_instance;
     draw_scene(ctx, draw);
+    target->resolve();
     return target;
 }
 

@@ -1,5 +1,6 @@
 #include "render/non_affine_pass.hpp"
 
+#include "render/alpha_order.hpp"
 #include "render/face_state.hpp"
 #include "render/scene_pass.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -32,6 +34,8 @@ frustum::Plane<float> outward_plane(const glm::vec3& a, const glm::vec3& b, cons
 struct Range {
     GLsizei first = 0, count = 0;
     const WorldPrimitive* primitive = nullptr;
+    AlphaGroup group = AlphaGroup::Opaque;
+    float depth_m = 0.0f; // BLEND: distance of its centre behind the near plane
 };
 
 void set_material(const PassContext& ctx, const NonAffineProgram& p, const WorldPrimitive& primitive) {
@@ -43,7 +47,14 @@ void set_material(const PassContext& ctx, const NonAffineProgram& p, const World
     fn.Uniform1i(p.has_texture, textured ? 1 : 0);
     fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
     fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
-    fn.Uniform1i(p.shading, static_cast<GLint>(primitive.has_normals ? Shading::VertexNormals : Shading::FlatNormals));
+    fn.Uniform1i(p.blend, material.alpha_mode == scene::AlphaMode::Blend ? 1 : 0);
+    if (p.alpha_cutoff >= 0) {
+        fn.Uniform1f(p.alpha_cutoff, material.alpha_cutoff);
+    }
+    const Shading shading = material.unlit           ? Shading::Unlit
+                            : primitive.has_normals ? Shading::VertexNormals
+                                                    : Shading::FlatNormals;
+    fn.Uniform1i(p.shading, static_cast<GLint>(shading));
     set_face_state(fn, material.double_sided, false, false);
 }
 
@@ -151,6 +162,16 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
             indices.insert(indices.end(), {base + p.indices[t], base + p.indices[t + 1], base + p.indices[t + 2]});
         }
         range.count = static_cast<GLsizei>(indices.size()) - range.first;
+        range.group = alpha_group(ctx.scene.material(p.material).alpha_mode);
+        if (range.group == AlphaGroup::Blend && !p.vertices.empty()) {
+            glm::vec3 low = p.vertices.front().position, high = low;
+            for (const WorldVertex& v : p.vertices) {
+                low = glm::min(low, v.position);
+                high = glm::max(high, v.position);
+            }
+            // The near plane is outward (plane 4): its distance is negative inside.
+            range.depth_m = -frustum.plane(4).distance(0.5f * (low + high));
+        }
         if (range.count > 0) {
             ranges.push_back(range);
         }
@@ -175,13 +196,29 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
                   GL_STREAM_DRAW);
     set_vertex_layout(fn);
 
-    const NonAffineProgram& p = ctx.programs.non_affine;
-    fn.UseProgram(p.program.id());
-    set_frame_uniforms(ctx, p, frustum);
+    // Opaque, masked, then blended from the farthest to the nearest (alpha_order.hpp).
+    std::stable_sort(ranges.begin(), ranges.end(), [](const Range& a, const Range& b) {
+        return a.group != b.group ? a.group < b.group : a.group == AlphaGroup::Blend && a.depth_m > b.depth_m;
+    });
+    const NonAffineProgram* current = nullptr;
+    bool blending = false;
     for (const Range& range : ranges) {
+        const NonAffineProgram& p = ctx.programs.non_affine_program(range.group == AlphaGroup::Mask);
+        if (&p != current) {
+            fn.UseProgram(p.program.id());
+            set_frame_uniforms(ctx, p, frustum);
+            current = &p;
+        }
+        if (range.group == AlphaGroup::Blend && !blending) {
+            begin_blending(fn);
+            blending = true;
+        }
         set_material(ctx, p, *range.primitive);
         fn.DrawElements(GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
                         reinterpret_cast<const void*>(static_cast<std::size_t>(range.first) * sizeof(GLuint)));
+    }
+    if (blending) {
+        end_blending(fn);
     }
     fn.BindVertexArray(0);
     fn.BindBuffer(GL_ARRAY_BUFFER, 0);

@@ -31,6 +31,9 @@ struct PassContext {
     const DepthPolicy& depth;
     Lighting lighting;
     glm::vec4 clear_color = kClearColor;
+    // MSAA samples of the frame; the passes' own targets (the reflection
+    // texture, the curved mirror's atlas) are multisampled alike and resolved.
+    int samples = 1;
 };
 
 } // namespace render

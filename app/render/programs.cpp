@@ -13,10 +13,12 @@ namespace {
 using detail::link;
 using detail::UniformFinder;
 
-frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_plane) {
-    const char* name = clip_plane ? "clipped scene" : "scene";
-    const std::string fragment =
-        clip_plane ? detail::insert_after_version(shaders::scene_frag, "#define CLIP_PLANE 1\n") : std::string(shaders::scene_frag);
+frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_plane, bool alpha_mask) {
+    const char* names[2][2] = {{"scene", "masked scene"}, {"clipped scene", "clipped masked scene"}};
+    const char* name = names[clip_plane ? 1 : 0][alpha_mask ? 1 : 0];
+    const std::string defines = std::string(clip_plane ? "#define CLIP_PLANE 1\n" : "") +
+                                (alpha_mask ? "#define ALPHA_MASK 1\n" : "");
+    const std::string fragment = detail::insert_after_version(shaders::scene_frag, defines);
     auto program = link(fn, shaders::scene_vert, fragment, name);
     if (!program) {
         return frustum::Error{program.error()};
@@ -37,8 +39,12 @@ frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_pla
     u.find(p.to_light, "u_to_light");
     u.find(p.ambient, "u_ambient");
     u.find(p.diffuse, "u_diffuse");
+    u.find(p.blend, "u_blend");
     if (clip_plane) {
         u.find(p.clip_plane, "u_clip_plane");
+    }
+    if (alpha_mask) {
+        u.find(p.alpha_cutoff, "u_alpha_cutoff");
     }
     if (auto status = u.status(); !status) {
         return frustum::Error{status.error()};
@@ -103,38 +109,53 @@ frustum::Result<CurvedMirrorProgram> build_curved_mirror(const gl::Functions& fn
 
 } // namespace
 
+const SceneProgram& Programs::scene_program(bool clip_plane, bool alpha_mask) const {
+    return scene[clip_plane ? 1 : 0][alpha_mask ? 1 : 0];
+}
+
+const NonAffineProgram& Programs::non_affine_program(bool alpha_mask) const {
+    return non_affine[alpha_mask ? 1 : 0];
+}
+
 frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
-    auto scene = build_scene(fn, false);
-    if (!scene) {
-        return frustum::Error{scene.error()};
+    Programs programs;
+    for (const bool clip : {false, true}) {
+        for (const bool mask : {false, true}) {
+            auto scene = build_scene(fn, clip, mask);
+            if (!scene) {
+                return frustum::Error{scene.error()};
+            }
+            programs.scene[clip ? 1 : 0][mask ? 1 : 0] = std::move(*scene);
+        }
     }
-    auto scene_clipped = build_scene(fn, true);
-    if (!scene_clipped) {
-        return frustum::Error{scene_clipped.error()};
+    for (const bool mask : {false, true}) {
+        auto non_affine = build_non_affine_program(fn, mask);
+        if (!non_affine) {
+            return frustum::Error{non_affine.error()};
+        }
+        programs.non_affine[mask ? 1 : 0] = std::move(*non_affine);
     }
     auto mirror_composite = build_mirror_composite(fn);
     if (!mirror_composite) {
         return frustum::Error{mirror_composite.error()};
     }
+    programs.mirror_composite = std::move(*mirror_composite);
     auto line = build_line(fn);
     if (!line) {
         return frustum::Error{line.error()};
     }
+    programs.line = std::move(*line);
     auto curved_mirror = build_curved_mirror(fn);
     if (!curved_mirror) {
         return frustum::Error{curved_mirror.error()};
     }
+    programs.curved_mirror = std::move(*curved_mirror);
     auto lens_remap = build_lens_remap_program(fn);
     if (!lens_remap) {
         return frustum::Error{lens_remap.error()};
     }
-    auto non_affine = build_non_affine_program(fn);
-    if (!non_affine) {
-        return frustum::Error{non_affine.error()};
-    }
-    return Programs{std::move(*scene),         std::move(*scene_clipped), std::move(*mirror_composite),
-                    std::move(*line),          std::move(*curved_mirror), std::move(*lens_remap),
-                    std::move(*non_affine)};
+    programs.lens_remap = std::move(*lens_remap);
+    return programs;
 }
 
 } // namespace render

@@ -15,15 +15,16 @@ struct SceneProgram {
     gl::Program program;
     GLint view_projection = -1, model = -1, normal_matrix = -1, point_size_px = -1;
     GLint base_color = -1, has_texture = -1, base_color_texture = -1, shading = -1, double_sided = -1;
-    GLint flat_normal_sign = -1, to_light = -1, ambient = -1, diffuse = -1;
-    GLint clip_plane = -1; // only in the CLIP_PLANE variant
+    GLint flat_normal_sign = -1, to_light = -1, ambient = -1, diffuse = -1, blend = -1;
+    GLint clip_plane = -1;   // only in the CLIP_PLANE variants
+    GLint alpha_cutoff = -1; // only in the ALPHA_MASK variants
 };
 
 // u_shading values of scene.frag.
 enum class Shading : GLint {
     VertexNormals = 0,
     FlatNormals = 1, // from screen-space derivatives: triangles without normals
-    Unlit = 2,       // points and lines without normals
+    Unlit = 2,       // points and lines without normals, KHR_materials_unlit
 };
 
 // shaders/mirror_composite.*: the mirror surface with a projective lookup.
@@ -45,13 +46,17 @@ struct LineProgram {
 };
 
 struct Programs {
-    SceneProgram scene;
-    SceneProgram scene_clipped; // scene.frag with CLIP_PLANE: discards behind a world plane
+    // scene.frag as [CLIP_PLANE][ALPHA_MASK]: [1][*] discard behind a world
+    // plane, [*][1] discard below the material's alphaCutoff.
+    SceneProgram scene[2][2];
     MirrorCompositeProgram mirror_composite;
     LineProgram line;
     CurvedMirrorProgram curved_mirror;
-    LensRemapProgram lens_remap; // lens reference (warp_programs.hpp)
-    NonAffineProgram non_affine; // non-affine effect (warp_programs.hpp)
+    LensRemapProgram lens_remap;    // lens reference (warp_programs.hpp)
+    NonAffineProgram non_affine[2]; // non-affine effect (warp_programs.hpp), [ALPHA_MASK]
+
+    const SceneProgram& scene_program(bool clip_plane, bool alpha_mask) const;
+    const NonAffineProgram& non_affine_program(bool alpha_mask) const;
 
     // Compile and link errors carry the info log; a uniform the code sets
     // but the program lacks is an error too ("render::Programs::build():

@@ -64,7 +64,12 @@ PassContext Renderer::pass_context(const DepthPolicy& depth, const Lighting& lig
 
 frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cameras,
                                                const RenderOptions& options) const {
-    auto frame = gl::OffscreenTarget::create(*fn_, {options.width_px, options.height_px});
+    auto samples = gl::choose_samples(*fn_, options.msaa_samples);
+    if (!samples) {
+        return frustum::Error{"render::Renderer::render(): " + samples.error()};
+    }
+    auto frame = gl::OffscreenTarget::create(
+        *fn_, {options.width_px, options.height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, *samples});
     if (!frame) {
         return frustum::Error{"render::Renderer::render(): " + frame.error()};
     }
@@ -81,7 +86,8 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
         return frustum::Error{depth.error()};
     }
     frame.bind();
-    const PassContext ctx = pass_context(*depth, options.lighting);
+    PassContext ctx = pass_context(*depth, options.lighting);
+    ctx.samples = frame.samples();
     if (auto status = draw(effect, ctx, frame, cameras, options); !status) {
         return status;
     }
@@ -128,7 +134,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         if (!lens) {
             return frustum::Error{lens.error()};
         }
-        // The disc is hidden: opaque (alphaMode is not read), it would cover the magnified spot.
+        // The disc is hidden: the lens effect is the magnifier itself, and the
+        // lens reference (lens_reference.hpp) remaps a frame without it.
         const int disc = lens_ ? lens_->instance : -1;
         return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
     }

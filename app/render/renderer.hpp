@@ -41,6 +41,9 @@ struct RenderOptions {
     float lens_power = 2.0f;                           // lens effect: p of eq. 34 (> 1 magnifies)
     NonAffineOptions nonaffine;                        // nonaffine effect: frustum, subdivision, culling
     Lighting lighting;
+    // MSAA samples of render()'s frame (gl::choose_samples()): kAutomaticSamples
+    // = 4 or the context's maximum, 1 = off. render_into() uses the target's.
+    int msaa_samples = gl::kAutomaticSamples;
 };
 
 class Renderer {
@@ -51,14 +54,15 @@ public:
                                             const scene::Scene& scene);
 
     // Renders `effect` into a new width_px x height_px RGBA8 image (rows top
-    // to bottom). The frustum effect shows cameras.main (and its mirror
+    // to bottom), multisampled with options.msaa_samples and resolved. The frustum effect shows cameras.main (and its mirror
     // reflection) from cameras.overview; the others use cameras.main. The
     // mirror effect of a scene without a mirror is the plain frame.
     frustum::Result<image::Image> render(Effect effect, const Cameras& cameras, const RenderOptions& options) const;
 
     // As render(), but into an existing target, which sets the size (the
     // effect is laid out for frame.width() x frame.height(); options.width_px
-    // and height_px are not used), and leaves it bound. A window renders
+    // and height_px are not used, nor msaa_samples: the target's samples
+    // are), and leaves it bound; a multisampled target is not resolved yet. A window renders
     // each frame this way and blits the target to its framebuffer.
     frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
                                 const gl::OffscreenTarget& frame) const;

@@ -1,8 +1,12 @@
 #include "render/scene_pass.hpp"
 
+#include "render/alpha_order.hpp"
 #include "render/face_state.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <vector>
 
 namespace render {
 namespace {
@@ -20,7 +24,10 @@ glm::mat3 normal_matrix(const glm::mat4& model) {
     return glm::determinant(a) < 0.0f ? -cofactor : cofactor;
 }
 
-Shading shading_for(const GpuPrimitive& primitive) {
+Shading shading_for(const GpuPrimitive& primitive, const GpuMaterial& material) {
+    if (material.unlit) {
+        return Shading::Unlit;
+    }
     if (primitive.has_normals) {
         return Shading::VertexNormals;
     }
@@ -37,7 +44,37 @@ void set_material(const PassContext& ctx, const SceneProgram& p, const GpuMateri
     fn.Uniform1i(p.has_texture, textured ? 1 : 0);
     fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
     fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
+    fn.Uniform1i(p.blend, material.alpha_mode == scene::AlphaMode::Blend ? 1 : 0);
+    if (p.alpha_cutoff >= 0) {
+        fn.Uniform1f(p.alpha_cutoff, material.alpha_cutoff);
+    }
 }
+
+// The frame uniforms of one scene program variant.
+void use_program(const PassContext& ctx, const SceneProgram& p, const SceneDraw& draw) {
+    const gl::Functions& fn = ctx.fn;
+    fn.UseProgram(p.program.id());
+    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(draw.camera).matrix()));
+    fn.Uniform1f(p.point_size_px, kPointSizePx);
+    // A mirrored view turns cross(dFdx, dFdy) away from the viewer.
+    fn.Uniform1f(p.flat_normal_sign, draw.camera.flips_winding() ? -1.0f : 1.0f);
+    const glm::vec3 to_light = glm::normalize(glm::mat3(draw.pre_model) * ctx.lighting.to_light);
+    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
+    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
+    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
+    if (draw.clip_plane) {
+        fn.Uniform4fv(p.clip_plane, 1, glm::value_ptr(draw.clip_plane->abcd));
+    }
+    fn.Uniform1i(p.base_color_texture, 0);
+}
+
+// One primitive of one instance, and where it goes in the draw order.
+struct DrawItem {
+    std::size_t instance = 0;
+    const GpuPrimitive* primitive = nullptr;
+    AlphaGroup group = AlphaGroup::Opaque;
+    float depth = 0.0f; // view_depth() of its centre: BLEND only
+};
 
 } // namespace
 
@@ -68,41 +105,56 @@ void begin_frame(const PassContext& ctx) {
 
 void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
     const gl::Functions& fn = ctx.fn;
-    const SceneProgram& p = draw.clip_plane ? ctx.programs.scene_clipped : ctx.programs.scene;
-    const frustum::MatrixPair<float> gpu_camera = ctx.depth.to_gpu(draw.camera);
     const bool view_flips = draw.camera.flips_winding();
-
-    fn.UseProgram(p.program.id());
-    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(gpu_camera.matrix()));
-    fn.Uniform1f(p.point_size_px, kPointSizePx);
-    // A mirrored view turns cross(dFdx, dFdy) away from the viewer.
-    fn.Uniform1f(p.flat_normal_sign, view_flips ? -1.0f : 1.0f);
-    const glm::vec3 to_light = glm::normalize(glm::mat3(draw.pre_model) * ctx.lighting.to_light);
-    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
-    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
-    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
-    if (draw.clip_plane) {
-        fn.Uniform4fv(p.clip_plane, 1, glm::value_ptr(draw.clip_plane->abcd));
-    }
-    fn.ActiveTexture(GL_TEXTURE0);
-    fn.Uniform1i(p.base_color_texture, 0);
-
     const auto& instances = ctx.scene.instances();
+    const auto model_of = [&](std::size_t i) { return draw.pre_model * instances[i].world; };
+
+    std::vector<DrawItem> items;
     for (std::size_t i = 0; i < instances.size(); ++i) {
         if (static_cast<int>(i) == draw.skip_instance) {
             continue;
         }
-        const glm::mat4 model = draw.pre_model * instances[i].world;
+        for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instances[i].mesh)]) {
+            DrawItem item{i, &primitive, alpha_group(ctx.scene.material(primitive.material).alpha_mode)};
+            if (item.group == AlphaGroup::Blend) {
+                item.depth = view_depth(draw.camera, glm::vec3(model_of(i) * glm::vec4(primitive.center, 1.0f)));
+            }
+            items.push_back(item);
+        }
+    }
+    // Opaque, then masked, then blended from the farthest to the nearest.
+    std::stable_sort(items.begin(), items.end(), [](const DrawItem& a, const DrawItem& b) {
+        if (a.group != b.group) {
+            return a.group < b.group;
+        }
+        return a.group == AlphaGroup::Blend && a.depth > b.depth;
+    });
+
+    fn.ActiveTexture(GL_TEXTURE0);
+    const SceneProgram* current = nullptr;
+    bool blending = false;
+    for (const DrawItem& item : items) {
+        const SceneProgram& p = ctx.programs.scene_program(draw.clip_plane.has_value(), item.group == AlphaGroup::Mask);
+        if (&p != current) {
+            use_program(ctx, p, draw);
+            current = &p;
+        }
+        if (item.group == AlphaGroup::Blend && !blending) {
+            begin_blending(fn);
+            blending = true;
+        }
+        const glm::mat4 model = model_of(item.instance);
         const bool model_flips = glm::determinant(glm::mat3(model)) < 0.0f;
         fn.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model));
         fn.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix(model)));
-        for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instances[i].mesh)]) {
-            const GpuMaterial& material = ctx.scene.material(primitive.material);
-            set_material(ctx, p, material);
-            fn.Uniform1i(p.shading, static_cast<GLint>(shading_for(primitive)));
-            set_face_state(fn, material.double_sided, view_flips, model_flips);
-            draw_primitive(fn, primitive);
-        }
+        const GpuMaterial& material = ctx.scene.material(item.primitive->material);
+        set_material(ctx, p, material);
+        fn.Uniform1i(p.shading, static_cast<GLint>(shading_for(*item.primitive, material)));
+        set_face_state(fn, material.double_sided, view_flips, model_flips);
+        draw_primitive(fn, *item.primitive);
+    }
+    if (blending) {
+        end_blending(fn);
     }
     fn.BindVertexArray(0);
     fn.BindTexture(GL_TEXTURE_2D, 0);

@@ -34,15 +34,17 @@ frustum::Result<LensRemapProgram> build_lens_remap_program(const gl::Functions& 
     return p;
 }
 
-frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& fn) {
+frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& fn, bool alpha_mask) {
     const std::string vertex = detail::insert_after_version(shaders::non_affine_vert, shaders::frustum_glsl);
-    auto program = link(fn, vertex, shaders::scene_frag, "non-affine");
+    const std::string fragment = detail::insert_after_version(shaders::scene_frag, alpha_mask ? "#define ALPHA_MASK 1\n" : "");
+    const char* name = alpha_mask ? "masked non-affine" : "non-affine";
+    auto program = link(fn, vertex, fragment, name);
     if (!program) {
         return frustum::Error{program.error()};
     }
     NonAffineProgram p;
     p.program = std::move(*program);
-    Uniforms u(fn, p.program, "non-affine");
+    Uniforms u(fn, p.program, name);
     u.find(p.planes, "u_planes");
     u.find(p.z_near, "u_z_near");
     u.find(p.z_far, "u_z_far");
@@ -55,6 +57,10 @@ frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& 
     u.find(p.to_light, "u_to_light");
     u.find(p.ambient, "u_ambient");
     u.find(p.diffuse, "u_diffuse");
+    u.find(p.blend, "u_blend");
+    if (alpha_mask) {
+        u.find(p.alpha_cutoff, "u_alpha_cutoff");
+    }
     if (auto status = u.status(); !status) {
         return frustum::Error{status.error()};
     }

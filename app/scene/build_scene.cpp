@@ -1,10 +1,14 @@
 #include "build_scene.hpp"
 
 #include "accessor_reader.hpp"
+#include "extensions.hpp"
 #include "node_graph.hpp"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -55,20 +59,127 @@ Status read_vectors(const tinygltf::Model& model, const tinygltf::Primitive& pri
     return {};
 }
 
+// How a material's base colour texture is read: from which TEXCOORD_<set>
+// (textureInfo.texCoord, or KHR_texture_transform's texCoord), through which
+// KHR_texture_transform matrix (identity without one).
+struct TexcoordUse {
+    bool textured = false;
+    int set = 0;
+    glm::mat3 transform{1.0f};
+};
+
+Result<glm::vec2> read_vec2(const tinygltf::Value& object, const char* key, glm::vec2 fallback,
+                            const std::string& where) {
+    if (!object.Has(key)) {
+        return fallback;
+    }
+    const tinygltf::Value& value = object.Get(key);
+    if (!value.IsArray() || value.ArrayLen() != 2 || !value.Get(0).IsNumber() || !value.Get(1).IsNumber()) {
+        return Error{where + " " + key + " must be an array of 2 numbers"};
+    }
+    const glm::vec2 out(static_cast<float>(value.Get(0).GetNumberAsDouble()),
+                        static_cast<float>(value.Get(1).GetNumberAsDouble()));
+    if (!std::isfinite(out.x) || !std::isfinite(out.y)) {
+        return Error{where + " " + key + " must be finite"};
+    }
+    return out;
+}
+
+// KHR_texture_transform: uv' = T R S uv, written as in the extension's
+// specification (column-major, as GLSL's and GLM's mat3 constructors).
+Result<TexcoordUse> texcoord_use(const tinygltf::Material& material, int index) {
+    const tinygltf::TextureInfo& texture = material.pbrMetallicRoughness.baseColorTexture;
+    TexcoordUse use;
+    use.textured = texture.index >= 0;
+    use.set = texture.texCoord;
+    auto found = texture.extensions.find(kTextureTransform);
+    if (!use.textured || found == texture.extensions.end()) {
+        return use;
+    }
+    const std::string where = "material " + std::to_string(index) + " baseColorTexture " + kTextureTransform;
+    const tinygltf::Value& ext = found->second;
+    if (!ext.IsObject()) {
+        return Error{where + " is not an object"};
+    }
+    Result<glm::vec2> offset = read_vec2(ext, "offset", glm::vec2(0.0f), where);
+    Result<glm::vec2> scale = read_vec2(ext, "scale", glm::vec2(1.0f), where);
+    if (!offset || !scale) {
+        return Error{!offset ? offset.error() : scale.error()};
+    }
+    float rotation = 0.0f;
+    if (ext.Has("rotation")) {
+        const tinygltf::Value& value = ext.Get("rotation");
+        rotation = value.IsNumber() ? static_cast<float>(value.GetNumberAsDouble()) : NAN;
+        if (!std::isfinite(rotation)) {
+            return Error{where + " rotation must be a finite number"};
+        }
+    }
+    if (ext.Has("texCoord")) {
+        const tinygltf::Value& value = ext.Get("texCoord");
+        if (!value.IsInt() || value.GetNumberAsInt() < 0) {
+            return Error{where + " texCoord must be a whole number >= 0"};
+        }
+        use.set = value.GetNumberAsInt();
+    }
+    const float c = std::cos(rotation);
+    const float s = std::sin(rotation);
+    const glm::mat3 translation(1, 0, 0, 0, 1, 0, offset->x, offset->y, 1);
+    const glm::mat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
+    const glm::mat3 scaling(scale->x, 0, 0, 0, scale->y, 0, 0, 0, 1);
+    use.transform = translation * rotate * scaling;
+    return use;
+}
+
+// Morph targets with the given default weights, added on the CPU
+// (glTF 2.0 "Morph Targets": p = p0 + sum w_i t_i, for POSITION and NORMAL).
+Status apply_morph(const tinygltf::Model& model, const tinygltf::Primitive& source, const std::vector<double>& weights,
+                   Primitive& primitive) {
+    for (std::size_t t = 0; t < source.targets.size() && t < weights.size(); ++t) {
+        const float weight = static_cast<float>(weights[t]);
+        if (weight == 0.0f) {
+            continue;
+        }
+        for (auto [semantic, out] : {std::pair<const char*, std::vector<glm::vec3>*>{"POSITION", &primitive.positions},
+                                     {"NORMAL", &primitive.normals}}) {
+            auto found = source.targets[t].find(semantic);
+            if (found == source.targets[t].end() || out->empty()) {
+                continue;
+            }
+            Result<std::vector<float>> delta = read_floats(model, found->second);
+            if (!delta) {
+                return Error{delta.error()};
+            }
+            for (std::size_t v = 0; v < out->size(); ++v) { // counts: validate_morphs
+                (*out)[v] += weight * glm::vec3((*delta)[3 * v], (*delta)[3 * v + 1], (*delta)[3 * v + 2]);
+            }
+        }
+    }
+    return {};
+}
+
 Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::Primitive& source,
-                                  const std::string& where) {
+                                  const std::string& where, const std::vector<TexcoordUse>& uses,
+                                  const std::vector<double>& weights) {
     Primitive primitive;
     primitive.mode = static_cast<PrimitiveMode>(source.mode);
     primitive.material = source.material;
+    const TexcoordUse use = source.material >= 0 ? uses[static_cast<std::size_t>(source.material)] : TexcoordUse{};
+    // A set the primitive lacks leaves texcoords empty: the renderer then
+    // reads the texture at (0, 0), as it always did for a missing TEXCOORD_0.
+    const std::string texcoord = "TEXCOORD_" + std::to_string(use.set);
     Status reads[] = {
         read_vectors<3>(model, source, "POSITION", primitive.positions),
         read_vectors<3>(model, source, "NORMAL", primitive.normals),
-        read_vectors<2>(model, source, "TEXCOORD_0", primitive.texcoords),
+        read_vectors<2>(model, source, texcoord.c_str(), primitive.texcoords),
+        apply_morph(model, source, weights, primitive),
     };
     for (Status& status : reads) {
         if (!status) {
             return Error{status.error()};
         }
+    }
+    for (glm::vec2& uv : primitive.texcoords) {
+        uv = glm::vec2(use.transform * glm::vec3(uv, 1.0f));
     }
     if (auto color = source.attributes.find("COLOR_0"); color != source.attributes.end()) {
         Result<std::vector<glm::vec4>> colors = read_colors(model, color->second);
@@ -105,13 +216,14 @@ Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::
     return primitive;
 }
 
-Result<Mesh> build_mesh(const tinygltf::Model& model, int index) {
+Result<Mesh> build_mesh(const tinygltf::Model& model, int index, const std::vector<TexcoordUse>& uses,
+                        const std::vector<double>& weights) {
     const tinygltf::Mesh& source = model.meshes[index];
     Mesh mesh;
     mesh.name = source.name;
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
         const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
-        Result<Primitive> primitive = build_primitive(model, source.primitives[p], where);
+        Result<Primitive> primitive = build_primitive(model, source.primitives[p], where, uses, weights);
         if (!primitive) {
             return Error{primitive.error()};
         }
@@ -125,11 +237,12 @@ Material build_material(const tinygltf::Model& model, const tinygltf::Material& 
     material.name = source.name;
     const auto& factor = source.pbrMetallicRoughness.baseColorFactor;
     material.base_color_factor = glm::vec4(factor[0], factor[1], factor[2], factor[3]);
-    // Only TEXCOORD_0 is loaded, so a texture read through another set is dropped.
+    // Each primitive loads the TEXCOORD set its material's texture reads (texcoord_use()).
     const tinygltf::TextureInfo& texture = source.pbrMetallicRoughness.baseColorTexture;
-    if (texture.index >= 0 && texture.texCoord == 0) {
+    if (texture.index >= 0) {
         material.base_color_texture = model.textures[texture.index].source;
     }
+    material.unlit = source.extensions.count(kUnlit) > 0;
     material.double_sided = source.doubleSided;
     material.alpha_mode = source.alphaMode == "BLEND"  ? AlphaMode::Blend
                           : source.alphaMode == "MASK" ? AlphaMode::Mask
@@ -242,26 +355,119 @@ Bounds bounds_of(const Scene& scene) {
     return low.x <= high.x ? Bounds{low, high} : Bounds{};
 }
 
+// EXT_mesh_gpu_instancing: the node's world transform times each instance's
+// T R S (the attributes it lacks are identity), one Instance each.
+Result<std::vector<glm::dmat4>> instance_transforms(const tinygltf::Model& model, const tinygltf::Node& node,
+                                                    const glm::dmat4& world) {
+    auto found = node.extensions.find(kGpuInstancing);
+    if (found == node.extensions.end()) {
+        return std::vector<glm::dmat4>{world};
+    }
+    const tinygltf::Value& attributes = found->second.Get("attributes"); // validate_instancing
+    std::vector<float> columns[3];
+    const char* names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+    std::size_t count = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (attributes.Has(names[a])) {
+            Result<std::vector<float>> values = read_floats(model, attributes.Get(names[a]).GetNumberAsInt());
+            if (!values) {
+                return Error{values.error()};
+            }
+            columns[a] = std::move(values).value();
+            count = columns[a].size() / (a == 1 ? 4 : 3);
+        }
+    }
+    std::vector<glm::dmat4> out;
+    out.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        glm::dvec3 t(0.0), s(1.0);
+        glm::dquat r(1.0, 0.0, 0.0, 0.0);
+        if (!columns[0].empty()) t = glm::dvec3(columns[0][3 * i], columns[0][3 * i + 1], columns[0][3 * i + 2]);
+        if (!columns[2].empty()) s = glm::dvec3(columns[2][3 * i], columns[2][3 * i + 1], columns[2][3 * i + 2]);
+        if (!columns[1].empty()) {
+            r = glm::dquat(columns[1][4 * i + 3], columns[1][4 * i], columns[1][4 * i + 1], columns[1][4 * i + 2]);
+            const double length = glm::length(r);
+            r = length > kDegenerateLength ? r / length : glm::dquat(1.0, 0.0, 0.0, 0.0);
+        }
+        glm::dmat4 trs = glm::mat4_cast(r);
+        trs[0] *= s.x;
+        trs[1] *= s.y;
+        trs[2] *= s.z;
+        trs[3] = glm::dvec4(t, 1.0);
+        out.push_back(world * trs);
+    }
+    return out;
+}
+
+bool finite_single(const glm::dmat4& world) {
+    const glm::mat4 world_f(world);
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            if (!std::isfinite(world_f[c][r])) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Meshes as drawn: model mesh m with its own weights is scene mesh m; a node
+// with other morph weights (node.weights) gets a copy built with them.
+class MeshVariants {
+public:
+    MeshVariants(const tinygltf::Model& model, const std::vector<TexcoordUse>& uses) : model_(model), uses_(uses) {}
+
+    Result<int> index(int mesh, const std::vector<double>& node_weights, Scene& scene) {
+        if (node_weights.empty() || node_weights == model_.meshes[mesh].weights) {
+            return mesh;
+        }
+        const auto key = std::make_pair(mesh, node_weights);
+        if (auto found = variants_.find(key); found != variants_.end()) {
+            return found->second;
+        }
+        Result<Mesh> built = build_mesh(model_, mesh, uses_, node_weights);
+        if (!built) {
+            return Error{built.error()};
+        }
+        const int index = static_cast<int>(scene.meshes.size());
+        scene.meshes.push_back(std::move(built).value());
+        variants_.emplace(key, index);
+        return index;
+    }
+
+private:
+    const tinygltf::Model& model_;
+    const std::vector<TexcoordUse>& uses_;
+    std::map<std::pair<int, std::vector<double>>, int> variants_;
+};
+
 // Instances, cameras, mirror and lens from the flattened node forest.
-Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& nodes, Scene& scene) {
+Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& nodes, MeshVariants& meshes,
+                   Scene& scene) {
     for (const WorldNode& flat : nodes) {
         const tinygltf::Node& node = model.nodes[flat.node];
         // Finite inputs can still overflow single precision when composed
         // down the hierarchy (or exceed it alone: a translation of 1e39).
-        const glm::mat4 world_f(flat.world);
-        for (int c = 0; c < 4; ++c) {
-            for (int r = 0; r < 4; ++r) {
-                if (!std::isfinite(world_f[c][r])) {
-                    return Error{"node " + std::to_string(flat.node) +
-                                 (node.name.empty() ? "" : " (\"" + node.name + "\")") +
-                                 " has a world transform too large for single precision"};
-                }
-            }
+        const std::string too_large = "node " + std::to_string(flat.node) +
+                                      (node.name.empty() ? "" : " (\"" + node.name + "\")") +
+                                      " has a world transform too large for single precision";
+        if (!finite_single(flat.world)) {
+            return Error{too_large};
         }
-        int instance = -1;
+        int instance = -1; // the first Instance of the node (EXT_mesh_gpu_instancing: of several)
         if (node.mesh >= 0) {
+            Result<int> mesh = meshes.index(node.mesh, node.weights, scene);
+            Result<std::vector<glm::dmat4>> worlds = instance_transforms(model, node, flat.world);
+            if (!mesh || !worlds) {
+                return Error{!mesh ? mesh.error() : worlds.error()};
+            }
             instance = static_cast<int>(scene.instances.size());
-            scene.instances.push_back({node.mesh, glm::mat4(flat.world), node.name});
+            for (const glm::dmat4& world : *worlds) {
+                if (!finite_single(world)) {
+                    return Error{too_large + " (with its " + kGpuInstancing + " instances)"};
+                }
+                scene.instances.push_back({*mesh, glm::mat4(world), node.name});
+            }
         }
         if (node.camera >= 0) {
             Result<Camera> camera = build_camera(model, flat.node, flat.world);
@@ -299,17 +505,24 @@ Result<Scene> build_scene(tinygltf::Model&& model, const LoadOptions& options) {
     for (tinygltf::Image& source : model.images) {
         scene.images.push_back({source.width, source.height, std::move(source.image)});
     }
-    for (const tinygltf::Material& source : model.materials) {
-        scene.materials.push_back(build_material(model, source));
+    std::vector<TexcoordUse> uses;
+    for (std::size_t m = 0; m < model.materials.size(); ++m) {
+        scene.materials.push_back(build_material(model, model.materials[m]));
+        Result<TexcoordUse> use = texcoord_use(model.materials[m], static_cast<int>(m));
+        if (!use) {
+            return Error{use.error()};
+        }
+        uses.push_back(*use);
     }
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
-        Result<Mesh> mesh = build_mesh(model, static_cast<int>(m));
+        Result<Mesh> mesh = build_mesh(model, static_cast<int>(m), uses, model.meshes[m].weights);
         if (!mesh) {
             return Error{mesh.error()};
         }
         scene.meshes.push_back(std::move(mesh).value());
     }
-    if (Status placed = place_nodes(model, flatten(model, *roots), scene); !placed) {
+    MeshVariants variants(model, uses);
+    if (Status placed = place_nodes(model, flatten(model, *roots), variants, scene); !placed) {
         return Error{placed.error()};
     }
     scene.world_bounds = bounds_of(scene);

@@ -29,6 +29,7 @@ struct Material {
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::Opaque;
     float alpha_cutoff = 0.5f; // MASK only
+    bool unlit = false;        // KHR_materials_unlit: base colour only, no lighting
 };
 
 // glTF primitive modes, numbered as in the glTF spec (and GL).
@@ -44,10 +45,17 @@ enum class PrimitiveMode : std::uint32_t {
 
 struct Primitive {
     PrimitiveMode mode = PrimitiveMode::Triangles;
+    // POSITION and NORMAL have the morph targets' default weights applied
+    // (node.weights, else mesh.weights).
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // empty: flat-shade in the renderer
     std::vector<glm::vec4> colors;    // COLOR_0 as RGBA float, empty: white
-    std::vector<glm::vec2> texcoords; // TEXCOORD_0, empty: no texture lookup
+    // The TEXCOORD_<n> set the material's base colour texture reads
+    // (textureInfo.texCoord, overridden by KHR_texture_transform's texCoord),
+    // with KHR_texture_transform's offset, rotation and scale applied;
+    // TEXCOORD_0 for an untextured material; empty (also when the primitive
+    // lacks the set): the renderer reads the texture at uv (0, 0).
+    std::vector<glm::vec2> texcoords;
     std::vector<std::uint32_t> indices; // always filled (0..n-1 when the file had none)
     int material = -1; // index into Scene::materials, -1 = default material
 };
@@ -57,7 +65,10 @@ struct Mesh {
     std::vector<Primitive> primitives;
 };
 
-// One drawn mesh: the node graph flattened to world transforms.
+// One drawn mesh: the node graph flattened to world transforms. A node with
+// EXT_mesh_gpu_instancing gives one Instance per GPU instance (its world
+// transform times the instance's TRS), in order. `mesh` may be a copy of a
+// file mesh built with the node's own morph weights.
 struct Instance {
     int mesh = 0;
     glm::mat4 world{1.0f};

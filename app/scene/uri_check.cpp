@@ -1,6 +1,7 @@
 #include "uri_check.hpp"
 
 #include "budget_check.hpp"
+#include "extensions.hpp"
 #include "foreign_message.hpp"
 
 #include "scene/load_gltf.hpp"
@@ -9,6 +10,7 @@
 
 #include <cctype>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,6 +99,16 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    // The root's extensionsRequired as read ({} when absent), for check_required_extensions().
+    nlohmann::json required_extensions() const {
+        nlohmann::json root = nlohmann::json::object();
+        if (required_is_array_.value_or(false)) {
+            root["extensionsRequired"] = required_;
+        } else if (required_is_array_.has_value()) {
+            root["extensionsRequired"] = nullptr;
+        }
+        return root;
+    }
 
 private:
     enum class Kind { Object, Array, String, Other };
@@ -128,6 +140,16 @@ private:
         const std::size_t depth = stack_.size();
         if (depth == 0 && kind != Kind::Object) {
             return fail("the JSON root is not an object");
+        }
+        if (root_key_ == "extensionsRequired" && depth >= 1) {
+            // Collected here, checked by check_required_extensions() once
+            // the stream ends (an array of strings; anything else is refused there).
+            if (depth == 1) {
+                required_is_array_ = kind == Kind::Array;
+            } else if (depth == 2) {
+                required_.push_back(kind == Kind::String && text ? nlohmann::json(*text)
+                                                                 : nlohmann::json(nullptr));
+            }
         }
         if (depth == 2 && stack_[1] == Kind::Array) {
             ++item_;
@@ -167,6 +189,8 @@ private:
     long long item_ = -1;
     bool uri_key_ = false;
     std::string problem_;
+    std::optional<bool> required_is_array_; // set when the root has extensionsRequired
+    nlohmann::json required_ = nlohmann::json::array();
 };
 
 } // namespace
@@ -221,7 +245,7 @@ frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
     if (!parsed) {
         return frustum::Error{events.problem().empty() ? "invalid JSON" : events.problem()};
     }
-    return {};
+    return check_required_extensions(events.required_extensions());
 }
 
 } // namespace scene::detail

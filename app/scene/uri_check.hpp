@@ -20,6 +20,7 @@ std::string uri_problem(const std::string& uri);
 // Reads the JSON once as a stream of events (no tree is built, so memory
 // stays O(nesting depth + longest string); call check_json_depth first) and
 // checks that it is valid JSON, that the root is an object, that every
+// extension in extensionsRequired is supported (extensions.hpp), that every
 // buffers[i].uri and images[i].uri is acceptable, and that the tree tinygltf
 // will build (values * kJsonValueBytes) fits budget.max_decoded_bytes and
 // the "nodes" array budget.max_nodes (tinygltf spends ~1 KB and

@@ -98,14 +98,6 @@ Status validate_asset(const tinygltf::Model& model) {
     return {};
 }
 
-Status validate_required_extensions(const tinygltf::Model& model) {
-    if (!model.extensionsRequired.empty()) {
-        return Error{"the file requires extension \"" + model.extensionsRequired.front() +
-                     "\", which is not supported"};
-    }
-    return {};
-}
-
 Status validate_images_textures_materials(const tinygltf::Model& model) {
     for (std::size_t i = 0; i < model.images.size(); ++i) {
         const tinygltf::Image& image = model.images[i];
@@ -141,9 +133,10 @@ Status validate_images_textures_materials(const tinygltf::Model& model) {
 
 Status validate_model(const tinygltf::Model& model) {
     using Check = Status (*)(const tinygltf::Model&);
-    const Check checks[] = {validate_asset, validate_required_extensions, validate_buffer_views,
+    const Check checks[] = {validate_asset, validate_buffer_views,
                             validate_accessors, validate_meshes, validate_images_textures_materials,
-                            validate_nodes, validate_scenes, validate_cameras};
+                            validate_nodes, validate_scenes, validate_cameras, validate_morphs,
+                            validate_instancing};
     for (Check check : checks) {
         if (Status status = check(model); !status) {
             return status;

@@ -25,9 +25,18 @@ frustum::Status validate_meshes(const tinygltf::Model& model);
 // validate.cpp: asset.version (major 2; minVersion at most 2.0).
 frustum::Status validate_asset(const tinygltf::Model& model);
 
-// validate.cpp: extensionsRequired (none is supported), images (decoded
-// size), textures and material texture indices.
-frustum::Status validate_required_extensions(const tinygltf::Model& model);
+// validate_morphs.cpp: morph targets' POSITION/NORMAL (VEC3 FLOAT, one per
+// vertex), the same target count in every primitive of a mesh, and
+// mesh.weights / node.weights (one finite weight per target).
+frustum::Status validate_morphs(const tinygltf::Model& model);
+
+// validate_instancing.cpp: EXT_mesh_gpu_instancing on a node with a mesh,
+// TRANSLATION/ROTATION/SCALE accessors in range, of the allowed formats,
+// all with the same count >= 1.
+frustum::Status validate_instancing(const tinygltf::Model& model);
+
+// validate.cpp: images (decoded size), textures and material texture
+// indices. (extensionsRequired is checked before parsing: extensions.hpp.)
 frustum::Status validate_images_textures_materials(const tinygltf::Model& model);
 
 // validate_nodes.cpp: node indices and TRS/matrix sizes, the node forest

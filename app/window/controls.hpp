@@ -38,6 +38,7 @@ struct ViewerState {
     float lens_power = 2.0f; // lens effect; > 1 magnifies
     bool show_help = false;
     bool show_inset = false; // the frustum view in a corner
+    int msaa_samples = 0;    // gl::choose_samples(): 0 = 4 or the context's maximum, 1 = off
     bool quit = false;
 };
 

@@ -21,10 +21,15 @@ frustum::Result<FramePainter> FramePainter::create(const gl::Functions& fn) {
 }
 
 frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl::OffscreenTarget>& slot,
-                                                                int width_px, int height_px) {
-    if (!slot || slot->width() != width_px || slot->height() != height_px) {
+                                                                int width_px, int height_px, int msaa_samples) {
+    auto samples = gl::choose_samples(*fn_, msaa_samples);
+    if (!samples) {
+        return frustum::Error{"window::FramePainter::paint(): " + samples.error()};
+    }
+    if (!slot || slot->width() != width_px || slot->height() != height_px || slot->samples() != *samples) {
         slot.reset(); // free the old one first
-        auto target = gl::OffscreenTarget::create(*fn_, {width_px, height_px});
+        auto target = gl::OffscreenTarget::create(
+            *fn_, {width_px, height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, *samples});
         if (!target) {
             return frustum::Error{"window::FramePainter::paint(): " + target.error()};
         }
@@ -35,7 +40,7 @@ frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl
 
 frustum::Status FramePainter::paint(const render::Renderer& renderer, const Frame& frame, int width_px,
                                     int height_px) {
-    auto main = sized(frame_target_, width_px, height_px);
+    auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
     if (!main) {
         return frustum::Error{main.error()};
     }
@@ -46,7 +51,7 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
         return status;
     }
     if (const auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
-        auto inset = sized(inset_target_, rect->width, rect->height);
+        auto inset = sized(inset_target_, rect->width, rect->height, frame.options.msaa_samples);
         if (!inset) {
             return frustum::Error{inset.error()};
         }

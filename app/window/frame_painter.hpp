@@ -27,9 +27,10 @@ public:
 private:
     FramePainter(const gl::Functions& fn, TextOverlay text) : fn_(&fn), text_(std::move(text)) {}
 
-    // `slot` holding a width x height target, made anew when its size differs.
+    // `slot` holding a width x height target with gl::choose_samples(msaa_samples)
+    // samples, made anew when its size or sample count differs.
     frustum::Result<const gl::OffscreenTarget*> sized(std::optional<gl::OffscreenTarget>& slot, int width_px,
-                                                      int height_px);
+                                                      int height_px, int msaa_samples);
 
     const gl::Functions* fn_;
     TextOverlay text_;

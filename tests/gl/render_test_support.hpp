@@ -52,6 +52,7 @@ inline render::RenderOptions options(int width_px = kWidthPx, int height_px = kH
     o.width_px = width_px;
     o.height_px = height_px;
     o.mirror_tint = glm::vec3(1.0f); // a perfect mirror: reflection pixels compare 1:1
+    o.msaa_samples = 1;              // exact pixel comparisons (render_msaa_test.cpp turns it on)
     return o;
 }
 

@@ -66,6 +66,13 @@ const std::vector<DemoCase>& demo_cases() {
         {"unknown backend", render({"--backend", "vulkan"}), 2, {"unknown backend 'vulkan'"}, Out::NotCreated},
         {"unknown depth range", render({"--depth", "reversed"}), 2, {"unknown depth range 'reversed'"}, Out::NotCreated},
         {"unknown mirror method", render({"--mirror", "curved"}), 2, {"unknown mirror method 'curved'"}, Out::NotCreated},
+        {"--msaa 0", render({"--msaa", "0"}), 2, {"--msaa must be a sample count in 1..64 (1 = off), got '0'"},
+         Out::NotCreated},
+        {"--msaa 65", render({"--msaa", "65"}), 2, {"--msaa must be a sample count in 1..64 (1 = off), got '65'"},
+         Out::NotCreated},
+        {"--msaa beyond the context", render({"--effect", "plain", "--msaa", "64"}), 1,
+         {"frustum-demo: error: --msaa 64: gl::choose_samples(): 64 samples requested, but this context offers 1 to "},
+         Out::NoFiles},
         {"empty --out", [](const rob::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
          {"--out needs a folder"}, Out::NotCreated},
         {"--scene without a value", [](const rob::TempDir& d) {

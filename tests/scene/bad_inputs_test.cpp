@@ -104,7 +104,8 @@ const std::vector<BadInput>& bad_inputs() {
         {"required extension", edit("Box", [](Json& g) {
              g["extensionsUsed"] = {"KHR_draco_mesh_compression"};
              g["extensionsRequired"] = {"KHR_draco_mesh_compression"};
-         }), {"the file requires extension \"KHR_draco_mesh_compression\", which is not supported"}},
+         }), {"the file requires glTF extension KHR_draco_mesh_compression, which is not supported (supported: "
+          "EXT_mesh_gpu_instancing, KHR_materials_unlit, KHR_texture_transform)"}},
         {"no asset", edit("Box", [](Json& g) { g.erase("asset"); }), {"tinygltf", "\"asset\" object not found"}},
         {"deep nesting", [](Fixture& f) {
              std::string text = scene_test::read_json(scene_test::sample_path("Box")).dump();

@@ -1,11 +1,10 @@
 // One frame as data: the untouched camera is the scene's pair exactly, tile
-// counts are capped, the inset's place; window_cameras keeps the aspect.
+// counts are capped, the inset's place; make_cameras keeps the aspect.
 #include "showcase.hpp"
 
 #include <doctest/doctest.h>
 
 #include <window/frame.hpp>
-#include <window/window_cameras.hpp>
 
 #include <frustum/queries.hpp>
 
@@ -60,19 +59,13 @@ TEST_CASE("the inset: a third of the width, top-right, the framebuffer's aspect"
     CHECK(window::inset_effect(render::Effect::Frustum) == render::Effect::Plain);
 }
 
-TEST_CASE("window_cameras equals make_cameras at the camera's aspect and refits it otherwise") {
+TEST_CASE("make_cameras: a scene camera takes the image's aspect, so a square stays square") {
     const scene::Scene& scene = window_test::showcase();
     const int index = window_test::showcase_main_index();
-    const auto at_16_9 = window::window_cameras(scene, index, 256, 144);
-    REQUIRE_MESSAGE(at_16_9.ok(), at_16_9.error());
-    const render::Cameras reference = window_test::showcase_cameras(256, 144);
-    CHECK(same(at_16_9->main.pair, reference.main.pair));
-    CHECK(same(at_16_9->overview.pair, reference.overview.pair));
-
     // A square window: the main camera's 16:9 gives way, so a square in the
     // picture stays square: |m00| == |m11| for a symmetric perspective
     // (the view is rigid, so compare the scaled rows' lengths).
-    const auto square = window::window_cameras(scene, index, 300, 300);
+    const auto square = render::make_cameras(scene, index, 300, 300);
     REQUIRE_MESSAGE(square.ok(), square.error());
     for (const render::NamedCamera* camera : {&square->main, &square->overview}) {
         const glm::mat4& m = camera->pair.matrix();
@@ -80,6 +73,26 @@ TEST_CASE("window_cameras equals make_cameras at the camera's aspect and refits 
         const float row1 = glm::length(glm::vec3(m[0][1], m[1][1], m[2][1]));
         CAPTURE(camera->name);
         CHECK(row0 == doctest::Approx(row1).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("camera_pair: an orthographic camera keeps ymag and widens to the image's aspect") {
+    scene::Camera camera;
+    camera.name = "ortho";
+    camera.kind = scene::Camera::Kind::Orthographic;
+    camera.xmag = 1.0f; // a square camera ...
+    camera.ymag = 1.0f;
+    camera.znear_m = 0.1f;
+    camera.zfar_m = 10.0f;
+    for (const float aspect : {16.0f / 9.0f, 1.0f, 0.5f}) {
+        // ... in a 16:9, square or tall image: one world unit is as many
+        // pixels across as it is up, so nothing is stretched.
+        const auto pair = render::camera_pair(camera, aspect);
+        REQUIRE_MESSAGE(pair.ok(), pair.error());
+        const glm::mat4& m = pair->matrix();
+        CAPTURE(aspect);
+        CHECK(m[1][1] == doctest::Approx(1.0f));         // ymag 1: y in [-1, 1]
+        CHECK(m[0][0] * aspect == doctest::Approx(1.0f)); // x in [-aspect, aspect]
     }
 }
 

@@ -43,6 +43,7 @@ render::RenderOptions options() {
     render::RenderOptions o;
     o.width_px = 256;
     o.height_px = 144;
+    o.msaa_samples = 1; // as the single-sample targets render_into() draws into here
     return o;
 }
 

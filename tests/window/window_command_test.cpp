@@ -160,6 +160,7 @@ TEST_CASE("window usage errors exit 2 before opening anything") {
         {{"--tiles", "17x1"}, "--tiles must be NxM (columns x rows, 1..16 each), got '17x1'"},
         {{"--effect", "sepia"}, "unknown effect 'sepia' (expected plain, mirror, tiles, frustum"},
         {{"--mirror", "flat"}, "unknown mirror method 'flat'"},
+        {{"--msaa", "0"}, "--msaa must be a sample count in 1..64 (1 = off), got '0'"},
         {{"--colour"}, "unknown option '--colour' of window"},
         {{"--size"}, "--size needs a value"},
     };
@@ -176,7 +177,7 @@ TEST_CASE("window usage errors exit 2 before opening anything") {
 TEST_CASE("window --help lists the options") {
     const Child child = window_test::run(kDemo, {"window", "--help"});
     CHECK(child.exit_status == 0);
-    for (const char* option : {"--scene", "--size", "--effect", "--frames", "--screenshot", "--help-overlay", "--inset"}) {
+    for (const char* option : {"--scene", "--size", "--effect", "--frames", "--screenshot", "--help-overlay", "--inset", "--msaa"}) {
         CHECK(child.out.find(option) != std::string::npos);
     }
 }
