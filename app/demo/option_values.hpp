@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace demo {
 
@@ -13,6 +14,12 @@ std::optional<int> parse_count(std::string_view text, int max);
 
 // "640x360" -> (640, 360): two counts in [1, max] joined by 'x'.
 std::optional<std::pair<int, int>> parse_pair(std::string_view text, int max);
+
+// A finite decimal number, the whole text; empty otherwise.
+std::optional<float> parse_number(std::string_view text);
+
+// Exactly `count` finite numbers separated by commas ("1,0,-2.5").
+std::optional<std::vector<float>> parse_numbers(std::string_view text, std::size_t count);
 
 // The showcase scene in FRUSTUM_ASSETS_DIR (compiled in at build time).
 std::string default_scene();

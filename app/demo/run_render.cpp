@@ -7,7 +7,10 @@
 #include <image/contact_sheet.hpp>
 #include <image/png.hpp>
 #include <render/camera.hpp>
+#include <render/mirror_placement.hpp>
+#include <render/number_text.hpp>
 #include <render/renderer.hpp>
+#include <render/scene_fit.hpp>
 #include <scene/load_gltf.hpp>
 
 #include <memory>
@@ -25,6 +28,33 @@ std::string depth_summary(const render::Renderer& renderer, render::DepthPath pa
 }
 
 } // namespace
+
+EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter) {
+    if (auto placed = render::place_mirror(scene, settings.mirror_place)) {
+        reporter.note(*placed);
+    }
+    EffectSetup setup;
+    render::RenderOptions& options = setup.options;
+    options.mirror_method = settings.mirror;
+    options.curved = settings.curved;
+    if (scene.mirror) {
+        const float limit_m = render::max_sagitta_m(*scene.mirror, settings.curved.shape);
+        if (!settings.sagitta_given) {
+            options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, settings.curved.shape);
+        } else if (!(settings.curved.sagitta_m <= limit_m)) {
+            setup.sagitta_error = "--sagitta " + render::number_text(settings.curved.sagitta_m) +
+                                  " must be in [0, " + render::number_text(limit_m) +
+                                  "] m for this mirror (half the distance from its centre to its rim)";
+        }
+    }
+    options.lens_grid = settings.lens_grid;
+    options.lens_power = settings.lens_power;
+    options.tile_columns = settings.tile_columns;
+    options.tile_rows = settings.tile_rows;
+    options.tile_borders = settings.tile_borders;
+    options.fit = settings.fit;
+    return setup;
+}
 
 frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
     gl::ContextOptions options;
@@ -52,6 +82,7 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     if (!scene) {
         return runtime(scene.error());
     }
+    const EffectSetup setup = setup_effects(*scene, request, reporter);
     auto camera_index = render::find_camera(*scene, request.camera);
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
@@ -80,16 +111,10 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
 
-    render::RenderOptions options;
+    render::RenderOptions options = setup.options;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
     options.depth = request.depth;
-    options.mirror_method = request.mirror;
-    options.curved = request.curved;
-    options.lens_grid = request.lens_grid;
-    options.lens_power = request.lens_power;
-    options.tile_columns = request.tile_columns;
-    options.tile_rows = request.tile_rows;
 
     const bool several = request.effects.size() > 1;
     const std::size_t total = request.effects.size() + (several ? 1 : 0);
@@ -108,11 +133,19 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         return {};
     };
     for (render::Effect effect : request.effects) {
-        auto picture = renderer->render(effect, *cameras, options);
-        if (!picture) {
-            return runtime(picture.error());
-        }
         const std::string name(render::to_string(effect));
+        auto picture = effect == render::Effect::Curved && setup.sagitta_error
+                           ? frustum::Result<image::Image>(frustum::Error{*setup.sagitta_error})
+                           : renderer->render(effect, *cameras, options);
+        if (!picture) {
+            const std::string failure = name + ": " + picture.error();
+            if (!several) {
+                return runtime(failure);
+            }
+            run.failed_effects.push_back(failure);
+            reporter.progress("[-/" + std::to_string(total) + "] " + name + " failed: " + picture.error());
+            continue;
+        }
         if (auto status = write(*picture, name + ".png"); !status) {
             return runtime(status.error());
         }
@@ -122,6 +155,9 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         std::vector<std::pair<std::string, const image::Image*>> cells;
         for (const auto& [name, picture] : images) {
             cells.emplace_back(name, &picture);
+        }
+        if (cells.empty()) {
+            return run; // every effect failed: nothing to put on a sheet
         }
         auto sheet = image::contact_sheet(cells, 2);
         if (!sheet) {
