@@ -11,7 +11,8 @@
 namespace render {
 namespace {
 
-constexpr float kPivotMarginFraction = 0.05f; // the pivot stays 5% of near..far away from either plane
+constexpr float kPivotNearFactor = 1.05f; // the derived pivot stays 5% beyond the near plane
+constexpr float kPivotFarFactor = 0.95f;  // ... and 5% short of the far plane
 constexpr float kSlitPerPivot = 1.0f / 3.0f;  // the showcase's 2.6 m : 8 m, kept for every scene
 constexpr float kLensCenterLimit = 0.6f;      // derived lens centre: within the middle 60% of the frame
 constexpr float kLensRadiusMin = 0.1f;        // derived lens radius, fraction of the half height
@@ -59,9 +60,9 @@ frustum::Result<NonAffineOptions> fit_non_affine(const frustum::MatrixPair<float
                               far_text};
     }
     const glm::vec3 center = 0.5f * (bounds.min + bounds.max);
-    const float margin_m = kPivotMarginFraction * (far_m - near_m);
     const float center_depth_m = glm::dot(center - axes->frame.eye, axes->forward);
-    float pivot_m = std::clamp(center_depth_m, near_m + margin_m, far_m - margin_m);
+    float pivot_m = std::clamp(center_depth_m, std::min(kPivotNearFactor * near_m, far_m),
+                               std::max(kPivotFarFactor * far_m, near_m));
     if (fit.pivot_m) {
         pivot_m = *fit.pivot_m;
     } else if (fit.slit_m && !(pivot_m > *fit.slit_m)) {

@@ -29,7 +29,7 @@ struct EffectFit {
 
 // The non-affine options for `camera`: base with slit_depth_m and
 // pivot_depth_m replaced by the fit. Derived: pivot = depth of the bounds'
-// centre, clamped to [near + 5%, near + 95%] of near..far; slit = pivot / 3.
+// centre, clamped to [1.05 near, 0.95 far]; slit = pivot / 3.
 // Errors (explicit values only) name the option and the valid range, e.g.
 // "--pivot 9 must be less than the far distance 3.99 m of this camera".
 frustum::Result<NonAffineOptions> fit_non_affine(const frustum::MatrixPair<float>& camera,
