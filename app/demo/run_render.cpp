@@ -1,6 +1,7 @@
 #include "demo/run_render.hpp"
 
 #include "demo/output_dir.hpp"
+#include "demo/sheet_labels.hpp"
 
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
@@ -82,7 +83,6 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     if (!scene) {
         return runtime(scene.error());
     }
-    const EffectSetup setup = setup_effects(*scene, request, reporter);
     auto camera_index = render::find_camera(*scene, request.camera);
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
@@ -91,6 +91,7 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
     if (!cameras) {
         return runtime(cameras.error());
     }
+    const EffectSetup setup = setup_effects(*scene, request, reporter); // after the cameras: they frame the model
 
     // Destroyed in reverse: renderer, then the table its objects point to, then the context.
     auto context = make_context(request, reporter);
@@ -149,7 +150,8 @@ std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const 
         if (auto status = write(*picture, name + ".png"); !status) {
             return runtime(status.error());
         }
-        images.emplace_back(name, std::move(*picture));
+        images.emplace_back(name, with_caption(*picture, effect_caption(effect, options, cameras->main.name,
+                                                                        cameras->main.pair, *scene)));
     }
     if (several) {
         std::vector<std::pair<std::string, const image::Image*>> cells;

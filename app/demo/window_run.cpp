@@ -48,12 +48,12 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
         return runtime(scene.error());
     }
     session->scene = std::move(*scene);
-    session->effects = setup_effects(session->scene, request, Reporter{note, note});
     auto camera_index = render::find_camera(session->scene, request.camera);
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
     }
     session->camera_index = *camera_index;
+    session->effects = setup_effects(session->scene, request, Reporter{note, note});
     gl::WindowOptions options;
     options.title = window::window_title(request.effect, std::nullopt);
     options.width = request.width_px;

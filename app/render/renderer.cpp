@@ -166,7 +166,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         draw_scene(ctx, SceneDraw{cameras.main.pair});
         return {};
     case Effect::Tiles:
-        return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows);
+        return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
+                                options.tile_borders);
     case Effect::Frustum: {
         std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
         if (mirror_) {
