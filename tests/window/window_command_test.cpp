@@ -186,3 +186,46 @@ TEST_CASE("window --help lists the options") {
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("window") {
+
+// The effect options come from one table: both commands list the same
+// ones in --help and refuse the same bad value with the same message.
+TEST_CASE("render and window share every effect option, with the same messages") {
+    const Child render_help = window_test::run(kDemo, {"--help"});
+    const Child window_help = window_test::run(kDemo, {"window", "--help"});
+    REQUIRE(render_help.exit_status == 0);
+    REQUIRE(window_help.exit_status == 0);
+    const auto section = [](const std::string& help) {
+        const std::size_t start = help.find("effect options");
+        REQUIRE(start != std::string::npos);
+        return help.substr(start, help.find("\nUnset", start) - start);
+    };
+    const std::string render_options = section(render_help.out);
+    CHECK(render_options.substr(render_options.find('\n')) ==
+          section(window_help.out).substr(section(window_help.out).find('\n')));
+    std::vector<std::string> names;
+    for (std::size_t at = render_options.find("\n  --"); at != std::string::npos;
+         at = render_options.find("\n  --", at + 1)) {
+        const std::size_t end = render_options.find(' ', at + 3);
+        names.push_back(render_options.substr(at + 3, end - at - 3));
+    }
+    CHECK(names.size() >= 14);
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        if (name == "--tile-borders") {
+            continue; // a flag: no value to refuse
+        }
+        const Child r = window_test::run(kDemo, {"render", name, "bogus!"});
+        const Child w = window_test::run(kDemo, {"window", name, "bogus!"}, {{"DISPLAY", std::nullopt}});
+        CHECK(r.exit_status == 2);
+        CHECK(w.exit_status == 2);
+        const std::string r_prefix = "frustum-demo: error: ", w_prefix = "frustum-demo window: error: ";
+        REQUIRE(r.err.rfind(r_prefix, 0) == 0);
+        REQUIRE(w.err.rfind(w_prefix, 0) == 0);
+        CHECK(r.err.substr(r_prefix.size()) == w.err.substr(w_prefix.size()));
+        CHECK(r.err.find("bogus!") != std::string::npos);
+    }
+}
+
+} // TEST_SUITE
