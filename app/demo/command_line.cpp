@@ -44,12 +44,6 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
             return usage("--size must be WxH with 1..8192 each, got " + quoted);
         }
         std::tie(r.width_px, r.height_px) = *size;
-    } else if (name == "--tiles") {
-        const auto tiles = parse_pair(value, kMaxSidePx);
-        if (!tiles) {
-            return usage("--tiles must be NxM (columns x rows, each >= 1), got " + quoted);
-        }
-        std::tie(r.tile_columns, r.tile_rows) = *tiles;
     } else if (name == "--backend") {
         const auto backend = gl::parse_backend(value);
         if (!backend) {
@@ -64,16 +58,8 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
         } else {
             return usage("unknown depth range " + quoted + " (expected zero_to_one or minus_one_to_one)");
         }
-    } else if (name == "--mirror") {
-        const auto method = render::parse_mirror_method(value);
-        if (!method) {
-            return usage("unknown mirror method " + quoted + " (expected oblique, rectangle or reflect_only)");
-        }
-        r.mirror = *method;
-    } else if (name == "--patches" || name == "--sagitta" || name == "--cap") {
-        return apply_curved_option(r.curved, name, value);
-    } else if (name == "--lens-grid" || name == "--lens-power") {
-        return apply_lens_option(r, name, value);
+    } else if (const EffectOption* option = find_effect_option(name)) {
+        return option->apply(r, value);
     } else if (name == "--max-memory-mb" || name == "--max-nodes" || name == "--max-depth" ||
                name == "--max-drawn-vertices") {
         return apply_budget_option(r.budget, name, value);
@@ -90,75 +76,17 @@ std::optional<Failure> apply(RenderRequest& r, std::string_view name, const std:
 }
 
 bool takes_value(std::string_view name) {
-    for (std::string_view known : {"--scene", "--camera", "--effect", "--tiles", "--size", "--backend", "--depth",
-                                   "--mirror", "--out", "--patches", "--sagitta", "--cap", "--lens-grid",
-                                   "--lens-power", "--msaa", "--max-memory-mb", "--max-nodes",
-                                   "--max-depth", "--max-drawn-vertices"}) {
+    for (std::string_view known : {"--scene", "--camera", "--effect", "--size", "--backend", "--depth", "--out", "--msaa",
+                                   "--max-memory-mb", "--max-nodes", "--max-depth", "--max-drawn-vertices"}) {
         if (name == known) {
             return true;
         }
     }
-    return false;
+    const EffectOption* option = find_effect_option(name);
+    return option && option->value;
 }
 
 } // namespace
-
-std::optional<Failure> apply_curved_option(render::CurvedMirrorOptions& curved, std::string_view name,
-                                           const std::string& value) {
-    const std::string quoted = "'" + value + "'";
-    if (name == "--patches") {
-        int patches = 0;
-        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), patches);
-        if (value.empty() || error != std::errc() || end != value.data() + value.size() || patches < 1 ||
-            patches > render::kMaxCurvedPatches) {
-            return usage("--patches must be a whole number in 1.." + std::to_string(render::kMaxCurvedPatches) +
-                         ", got " + quoted);
-        }
-        curved.patches = patches;
-    } else if (name == "--sagitta") {
-        float sagitta_m = 0.0f;
-        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), sagitta_m);
-        if (value.empty() || error != std::errc() || end != value.data() + value.size() || !(sagitta_m >= 0.0f) ||
-            !std::isfinite(sagitta_m)) {
-            return usage("--sagitta must be a length in metres >= 0, got " + quoted);
-        }
-        curved.sagitta_m = sagitta_m;
-    } else if (name == "--cap") {
-        const auto shape = render::parse_cap_shape(value);
-        if (!shape) {
-            return usage("unknown cap shape " + quoted + " (expected sphere or cylinder)");
-        }
-        curved.shape = *shape;
-    } else {
-        return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
-    }
-    return std::nullopt;
-}
-
-std::optional<Failure> apply_lens_option(RenderRequest& request, std::string_view name, const std::string& value) {
-    const std::string quoted = "'" + value + "'";
-    const char* first = value.data();
-    const char* last = value.data() + value.size();
-    if (name == "--lens-grid") {
-        int grid = 0;
-        const auto [end, error] = std::from_chars(first, last, grid);
-        if (value.empty() || error != std::errc() || end != last || grid < 1 || grid > kMaxLensGrid) {
-            return usage("--lens-grid must be a whole number in 1.." + std::to_string(kMaxLensGrid) + ", got " +
-                         quoted);
-        }
-        request.lens_grid = grid;
-    } else if (name == "--lens-power") {
-        float power = 0.0f;
-        const auto [end, error] = std::from_chars(first, last, power);
-        if (value.empty() || error != std::errc() || end != last || !(power > 0.0f && power <= kMaxLensPower)) {
-            return usage("--lens-power must be a number in (0, 2], got " + quoted);
-        }
-        request.lens_power = power;
-    } else {
-        return usage("unknown option '" + std::string(name) + "'" + kHelpHint);
-    }
-    return std::nullopt;
-}
 
 std::optional<Failure> apply_budget_option(scene::Budget& budget, std::string_view name,
                                            const std::string& value) {
@@ -224,6 +152,9 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
             return *failure;
         }
     }
+    if (auto failure = check_effect_settings(request)) {
+        return *failure;
+    }
     if (request.tile_columns > request.width_px || request.tile_rows > request.height_px) {
         return usage("--tiles " + std::to_string(request.tile_columns) + "x" + std::to_string(request.tile_rows) +
                      " needs at least one pixel per tile, but the image is " + std::to_string(request.width_px) +
@@ -272,24 +203,11 @@ std::string help_text() {
            "                      default \"main\", else camera 0, else one framing the scene\n"
            "  --effect E          plain | mirror | tiles | frustum | curved | lens | nonaffine |\n"
            "                      all (default all)\n"
-           "  --tiles NxM         columns x rows of the tiles effect, at most 16384 tiles\n"
-           "                      and one pixel per tile (default 3x2)\n"
            "  --size WxH          image size in pixels, 1..8192 each (default 640x360)\n"
            "  --backend B         egl | osmesa (default: egl, falling back to osmesa with a note)\n"
            "  --depth D           zero_to_one: [0, 1] clip depth via clip control when the\n"
            "                      context has it, else matrices converted to [-1, 1] (default);\n"
            "                      minus_one_to_one: always the conversion\n"
-           "  --mirror M          reflection camera: oblique (reflect + oblique near plane,\n"
-           "                      default) | rectangle (reflected eye through the mirror) |\n"
-           "                      reflect_only (no near plane: shows what is behind the mirror)\n"
-           "  --patches N         curved effect: the convex cap in G x G patches, 1..64 (default 4)\n"
-           "  --sagitta M         curved effect: the cap's bulge at its centre in metres (default 0.3;\n"
-           "                      0 = the planar mirror; at most half the mirror's half-diagonal)\n"
-           "  --cap C             curved effect: sphere (default) | cylinder (axis along the\n"
-           "                      mirror's second side)\n"
-           "  --lens-grid N       lens effect: N x N tiles, 1..128 (default 16)\n"
-           "  --lens-power P      lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens;\n"
-           "                      stronger powers make tiles degenerate in single precision)\n"
            "  --msaa N            multisampled anti-aliasing with N samples per pixel, 1 = off\n"
            "                      (default 4, or the most the context offers when fewer)\n"
            "  --out DIR           output folder, created if missing (default out)\n"
@@ -300,9 +218,15 @@ std::string help_text() {
            "  --max-nodes N       most nodes, and most mesh primitives, in the file (default 100000)\n"
            "  --max-depth N       longest parent-to-child node chain (default 10000)\n"
            "  --max-drawn-vertices N  most vertices drawn per frame, over all nodes (default 33554432)\n"
+           "effect options (the same in window):\n" +
+           effect_options_help() +
+           "Unset effect parameters are derived from the scene's bounds and the camera\n"
+           "(docs/any-scene.md), so the defaults work on any scene.\n"
            "\n"
            "Writes DIR/<effect>.png per effect and, for several, DIR/contact_sheet.png;\n"
-           "prints each path written. Progress goes to stderr.\n"
+           "prints each path written. Progress goes to stderr. When an effect of\n"
+           "several fails, the others and the sheet are still written, and the exit\n"
+           "status is 1 with a message naming the effect.\n"
            "Exit status: 0 success, 1 runtime failure (scene, GL, output), 2 usage error.\n";
 }
 

@@ -84,10 +84,14 @@ int run_main(const std::vector<std::string>& args) {
         std::cerr << "frustum-demo: error: " << failure->message << '\n';
         return static_cast<int>(failure->status);
     }
-    for (const std::string& path : std::get<demo::RenderRun>(outcome).written_paths) {
+    const auto& run = std::get<demo::RenderRun>(outcome);
+    for (const std::string& path : run.written_paths) {
         std::cout << path << '\n';
     }
-    return 0;
+    for (const std::string& failure : run.failed_effects) {
+        std::cerr << "frustum-demo: error: effect " << failure << '\n';
+    }
+    return run.failed_effects.empty() ? 0 : static_cast<int>(demo::ExitStatus::RuntimeFailure);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "demo/run_render.hpp"
 
 #include "demo/output_dir.hpp"
+#include "demo/sheet_labels.hpp"
 
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
@@ -8,7 +9,10 @@
 #include <image/png.hpp>
 #include <render/camera.hpp>
 #include <render/curved_mirror.hpp>
+#include <render/mirror_placement.hpp>
+#include <render/number_text.hpp>
 #include <render/renderer.hpp>
+#include <render/scene_fit.hpp>
 #include <scene/load_gltf.hpp>
 
 #include <memory>
@@ -26,6 +30,33 @@ std::string depth_summary(const render::Renderer& renderer, render::DepthPath pa
 }
 
 } // namespace
+
+EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter) {
+    if (auto placed = render::place_mirror(scene, settings.mirror_place)) {
+        reporter.note(*placed);
+    }
+    EffectSetup setup;
+    render::RenderOptions& options = setup.options;
+    options.mirror_method = settings.mirror;
+    options.curved = settings.curved;
+    if (scene.mirror) {
+        const float limit_m = render::max_sagitta_m(*scene.mirror, settings.curved.shape);
+        if (!settings.sagitta_given) {
+            options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, settings.curved.shape);
+        } else if (!(settings.curved.sagitta_m <= limit_m)) {
+            setup.sagitta_error = "--sagitta " + render::number_text(settings.curved.sagitta_m) +
+                                  " must be in [0, " + render::number_text(limit_m) +
+                                  "] m for this mirror (half the distance from its centre to its rim)";
+        }
+    }
+    options.lens_grid = settings.lens_grid;
+    options.lens_power = settings.lens_power;
+    options.tile_columns = settings.tile_columns;
+    options.tile_rows = settings.tile_rows;
+    options.tile_borders = settings.tile_borders;
+    options.fit = settings.fit;
+    return setup;
+}
 
 frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
     gl::ContextOptions options;
@@ -62,19 +93,12 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
     }
-    // --sagitta is bounded by the scene's mirror: checked before any image
-    // is rendered, whichever effects run.
-    if (scene->mirror) {
-        auto cap = render::CurvedMirror::create(*scene->mirror, request.curved.shape, request.curved.sagitta_m);
-        if (!cap) {
-            return Failure{ExitStatus::UsageError, "--sagitta: " + cap.error()};
-        }
-    }
     g_activity = "rendering";
     auto cameras = render::make_cameras(*scene, *camera_index, request.width_px, request.height_px);
     if (!cameras) {
         return runtime(cameras.error());
     }
+    const EffectSetup setup = setup_effects(*scene, request, reporter); // after the cameras: they frame the model
 
     // Destroyed in reverse: renderer, then the table its objects point to, then the context.
     auto context = make_context(request, reporter);
@@ -101,16 +125,10 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
 
-    render::RenderOptions options;
+    render::RenderOptions options = setup.options;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
     options.depth = request.depth;
-    options.mirror_method = request.mirror;
-    options.curved = request.curved;
-    options.lens_grid = request.lens_grid;
-    options.lens_power = request.lens_power;
-    options.tile_columns = request.tile_columns;
-    options.tile_rows = request.tile_rows;
     options.msaa_samples = *samples;
 
     const bool several = request.effects.size() > 1;
@@ -130,21 +148,33 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         return {};
     };
     for (render::Effect effect : request.effects) {
-        auto picture = renderer->render(effect, *cameras, options);
-        if (!picture) {
-            return runtime(picture.error());
-        }
         const std::string name(render::to_string(effect));
+        auto picture = effect == render::Effect::Curved && setup.sagitta_error
+                           ? frustum::Result<image::Image>(frustum::Error{*setup.sagitta_error})
+                           : renderer->render(effect, *cameras, options);
+        if (!picture) {
+            const std::string failure = name + ": " + picture.error();
+            if (!several) {
+                return runtime(failure);
+            }
+            run.failed_effects.push_back(failure);
+            reporter.progress("[-/" + std::to_string(total) + "] " + name + " failed: " + picture.error());
+            continue;
+        }
         if (auto status = write(*picture, name + ".png"); !status) {
             return runtime(status.error());
         }
-        images.emplace_back(name, std::move(*picture));
+        images.emplace_back(name, with_caption(*picture, effect_caption(effect, options, cameras->main.name,
+                                                                        cameras->main.pair, *scene)));
     }
     g_activity = "writing the contact sheet";
     if (several) {
         std::vector<std::pair<std::string, const image::Image*>> cells;
         for (const auto& [name, picture] : images) {
             cells.emplace_back(name, &picture);
+        }
+        if (cells.empty()) {
+            return run; // every effect failed: nothing to put on a sheet
         }
         auto sheet = image::contact_sheet(cells, 2);
         if (!sheet) {

@@ -7,9 +7,12 @@
 
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
+#include <render/renderer.hpp>
+#include <scene/scene.hpp>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -24,11 +27,24 @@ struct Reporter {
 
 struct RenderRun {
     std::vector<std::string> written_paths; // in the order written
+    // One line per effect that could not be drawn ("nonaffine: ..."); the
+    // others and the contact sheet are written all the same. Not empty:
+    // main exits 1 after listing what was written.
+    std::vector<std::string> failed_effects;
 };
 
 // What the current run is doing ("loading the scene", "rendering"), for
 // main's "out of memory while ..." message when an allocation throws.
 extern const char* g_activity;
+
+// The scene's mirror (placed by --mirror-plane / --mirror-rect, else a floor
+// when the scene has none: a note says where) and the render options the
+// effect settings ask for, with unset parameters derived from the scene.
+struct EffectSetup {
+    render::RenderOptions options;
+    std::optional<std::string> sagitta_error; // an explicit --sagitta too large for this mirror
+};
+EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter);
 
 // The output folder is checked first, before the scene is read. A run that
 // fails removes the folders it created while they are still empty.

@@ -1,12 +1,14 @@
 // frustum-demo's window command line:
 //   frustum-demo window [--scene FILE] [--camera NAME|INDEX] [--size WxH]
-//                       [--effect E] [--tiles NxM] [--mirror M] [--inset]
-//                       [--help-overlay] [--frames N [--screenshot FILE]]
+//                       [--effect E] [--inset] [--help-overlay]
+//                       [--frames N [--screenshot FILE]] [--keys LIST]
+//                       [the effect options of demo/effect_options.hpp]
 #pragma once
 
 #include "demo/command_line.hpp"
 #include "demo/failure.hpp"
 
+#include <gl/window_input.hpp>
 #include <render/effect.hpp>
 
 #include <optional>
@@ -16,18 +18,18 @@
 
 namespace demo {
 
-struct WindowRequest {
+// The effect options come from EffectSettings, shared with render.
+struct WindowRequest : EffectSettings {
     std::string scene_path;            // default: FRUSTUM_ASSETS_DIR/showcase.gltf
     std::optional<std::string> camera; // name or index; default "main", else camera 0
     render::Effect effect = render::Effect::Plain;
-    int tile_columns = 3, tile_rows = 2;
     int width_px = 960, height_px = 540; // window size in screen coordinates
-    render::MirrorMethod mirror = render::MirrorMethod::Oblique;
     bool inset = false;        // start with the frustum view inset shown
     bool help_overlay = false; // start with the key help shown
     std::optional<int> frames;             // draw this many frames, then exit
     std::optional<std::string> screenshot; // with frames: the last frame as PNG
     int msaa_samples = 0; // --msaa N; 0 = gl::kAutomaticSamples: 4 or the context's maximum
+    std::vector<gl::KeyPressed> keys;      // --keys: pressed one per frame, from the first frame on
 };
 
 // args[0] is "window". Usage errors are ExitStatus::UsageError with a

@@ -1,5 +1,7 @@
 #include "demo/window_run.hpp"
 
+#include "demo/run_render.hpp"
+
 #include <gl/functions.hpp>
 #include <gl/glfw_egl_window.hpp>
 #include <gl/window_framebuffer.hpp>
@@ -15,6 +17,7 @@
 #include <window/mirror_pose.hpp>
 #include <window/orbit_camera.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <utility>
@@ -34,9 +37,11 @@ struct Session {
     std::unique_ptr<gl::Functions> fn;
     std::optional<render::Renderer> renderer;
     std::optional<window::FramePainter> painter;
+    EffectSetup effects; // the effect options, with what they leave unset derived from the scene
 };
 
-std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest& request) {
+std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest& request,
+                                                            const std::function<void(std::string_view)>& note) {
     auto session = std::make_unique<Session>();
     auto scene = scene::load_gltf(request.scene_path);
     if (!scene) {
@@ -48,6 +53,7 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
         return Failure{ExitStatus::UsageError, camera_index.error()};
     }
     session->camera_index = *camera_index;
+    session->effects = setup_effects(session->scene, request, Reporter{note, note});
     gl::WindowOptions options;
     options.title = window::window_title(request.effect, std::nullopt);
     options.width = request.width_px;
@@ -99,10 +105,21 @@ frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSi
     return image::write_png(*pixels, path);
 }
 
+// The frame's render options from the effect settings (the frame sets
+// size, tiles, mirror method and lens power from the viewer state).
+void apply_effect_settings(const EffectSetup& setup, window::Frame& frame, int width_px, int height_px) {
+    render::RenderOptions& o = frame.options;
+    o.curved = setup.options.curved;
+    o.fit = setup.options.fit;
+    o.tile_borders = setup.options.tile_borders;
+    o.lens_grid = std::min(setup.options.lens_grid, std::min(width_px, height_px));
+}
+
 } // namespace
 
-std::variant<WindowRun, Failure> run_window(const WindowRequest& request) {
-    auto opened = open_session(request);
+std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
+                                            const std::function<void(std::string_view)>& note) {
+    auto opened = open_session(request, note);
     if (auto* failure = std::get_if<Failure>(&opened)) {
         return *failure;
     }
@@ -118,10 +135,16 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request) {
     gl::FramebufferSize size = s.window->framebuffer_size();
     std::optional<render::Cameras> cameras;
     WindowRun run;
+    render::Effect shown_effect = state.effect; // the last effect drawn
+    std::optional<std::string> notice;          // why an effect was refused, in the overlay
+    std::size_t keys_pressed = 0;               // of request.keys, one per pass of the loop
 
     while (!s.window->should_close()) {
         const bool minimized = size.width_px < 1 || size.height_px < 1;
-        const std::vector<gl::InputEvent> events = minimized ? s.window->wait_events() : s.window->poll_events();
+        std::vector<gl::InputEvent> events = minimized ? s.window->wait_events() : s.window->poll_events();
+        if (keys_pressed < request.keys.size()) {
+            events.emplace_back(request.keys[keys_pressed++]);
+        }
         // The framebuffer size (not the window size) sets the frame, its aspect and the tiles.
         for (const gl::InputEvent& event : events) {
             if (const auto* resized = std::get_if<gl::FramebufferResized>(&event)) {
@@ -158,9 +181,36 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request) {
         if (!frame) {
             return runtime(frame.error());
         }
-        if (auto painted = s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px); !painted) {
-            return runtime(painted.error());
+        apply_effect_settings(s.effects, *frame, size.width_px, size.height_px);
+        if (notice) {
+            frame->text.insert(frame->text.begin(), *notice);
         }
+        frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
+                                      ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
+                                      : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
+        if (!painted) {
+            // Not for this scene or camera: keep the previous effect (plain
+            // when that one fails now too, then no inset), say why, go on.
+            const std::string name(render::to_string(frame->effect));
+            if (frame->effect == render::Effect::Plain && !frame->inset) {
+                return runtime(painted.error());
+            }
+            if (frame->effect != shown_effect) {
+                state.effect = shown_effect;
+            } else if (frame->effect != render::Effect::Plain) {
+                state.effect = render::Effect::Plain;
+            } else {
+                state.show_inset = false;
+            }
+            notice = (frame->effect == render::Effect::Plain ? std::string("inset") : "effect " + name) +
+                     " not drawn: " + painted.error() + "; showing " + std::string(render::to_string(state.effect));
+            note(*notice);
+            continue;
+        }
+        if (state.effect != shown_effect) {
+            notice.reset(); // a new effect was drawn: the old reason no longer applies
+        }
+        shown_effect = state.effect;
         ++run.frames_drawn;
         const bool last = request.frames && run.frames_drawn >= *request.frames;
         if (last && request.screenshot) {

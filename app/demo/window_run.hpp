@@ -3,6 +3,9 @@
 // or --frames is reached. Prints nothing.
 #pragma once
 
+#include <functional>
+#include <string_view>
+
 #include "demo/failure.hpp"
 #include "demo/window_command_line.hpp"
 
@@ -18,6 +21,10 @@ struct WindowRun {
 };
 
 // Without a display the failure says so and points to `frustum-demo render`.
-std::variant<WindowRun, Failure> run_window(const WindowRequest& request);
+// An effect that cannot be drawn for the current scene or camera does not
+// end the run: the previous effect stays on screen, the overlay says why,
+// and `note` gets the same line (as does the mirror placement).
+std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
+                                            const std::function<void(std::string_view)>& note);
 
 } // namespace demo

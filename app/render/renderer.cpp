@@ -130,7 +130,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
                                const Cameras& cameras, const RenderOptions& options) const {
     switch (effect) {
     case Effect::Lens: {
-        auto lens = lens_on_near_plane(cameras.main.pair, lens_, options.lens_power);
+        auto lens = fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
         if (!lens) {
             return frustum::Error{lens.error()};
         }
@@ -140,12 +140,16 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
     }
     case Effect::NonAffine: {
-        auto slits = crossed_slits_frustum(cameras.main.pair, options.nonaffine, ctx.depth.gpu_range());
+        auto fitted = fit_non_affine(cameras.main.pair, bounds_, options.nonaffine, options.fit);
+        if (!fitted) {
+            return frustum::Error{fitted.error()};
+        }
+        auto slits = crossed_slits_frustum(cameras.main.pair, *fitted, ctx.depth.gpu_range());
         if (!slits) {
             return frustum::Error{slits.error()};
         }
         const WorldGeometry world = object_geometry_.placed(gpu_scene_.instances());
-        if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, options.nonaffine); !stats) {
+        if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
             return frustum::Error{stats.error()};
         }
         return {};
@@ -169,7 +173,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         draw_scene(ctx, SceneDraw{cameras.main.pair});
         return {};
     case Effect::Tiles:
-        return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows);
+        return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
+                                options.tile_borders);
     case Effect::Frustum: {
         std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
         if (mirror_) {

@@ -12,6 +12,7 @@
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
+#include "render/scene_fit.hpp"
 #include "render/world_geometry.hpp"
 
 #include <frustum/result.hpp>
@@ -39,7 +40,11 @@ struct RenderOptions {
     CurvedMirrorOptions curved;                        // curved effect: cap shape, sagitta, G x G patches
     int lens_grid = 16;                                // lens effect: lens_grid x lens_grid tiles
     float lens_power = 2.0f;                           // lens effect: p of eq. 34 (> 1 magnifies)
-    NonAffineOptions nonaffine;                        // nonaffine effect: frustum, subdivision, culling
+    NonAffineOptions nonaffine;                        // nonaffine effect: subdivision, culling (the slit
+                                                       // and pivot come from `fit`, per frame)
+    EffectFit fit;                                     // slit, pivot, lens centre and radius; unset: derived
+                                                       // from the scene's bounds and the camera (scene_fit.hpp)
+    bool tile_borders = false;                         // tiles effect: draw each tile's border
     Lighting lighting;
     // MSAA samples of render()'s frame (gl::choose_samples()): kAutomaticSamples
     // = 4 or the context's maximum, 1 = off. render_into() uses the target's.

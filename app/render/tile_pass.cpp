@@ -5,7 +5,14 @@
 #include <frustum/crop.hpp>
 #include <gl/errors.hpp>
 
+#include <string>
+
 namespace render {
+namespace {
+
+constexpr glm::vec4 kTileBorderColor{1.0f, 0.85f, 0.1f, 1.0f}; // the frustum view's camera yellow
+
+} // namespace
 
 frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& frame,
                            const std::vector<frustum::Tile<float>>& tiles, int skip_instance, const char* where) {
@@ -27,13 +34,37 @@ frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& fr
     return gl::check_error(fn, where);
 }
 
+void draw_tile_borders(const PassContext& ctx, const std::vector<frustum::Tile<float>>& tiles,
+                       const glm::vec4& color) {
+    const gl::Functions& fn = ctx.fn;
+    fn.Enable(GL_SCISSOR_TEST);
+    fn.ClearColor(color.r, color.g, color.b, color.a);
+    for (const frustum::Tile<float>& tile : tiles) {
+        if (tile.x_px > 0) {
+            fn.Scissor(tile.x_px, tile.y_px, 1, tile.height_px);
+            fn.Clear(GL_COLOR_BUFFER_BIT);
+        }
+        if (tile.y_px > 0) {
+            fn.Scissor(tile.x_px, tile.y_px, tile.width_px, 1);
+            fn.Clear(GL_COLOR_BUFFER_BIT);
+        }
+    }
+    fn.Disable(GL_SCISSOR_TEST);
+}
+
 frustum::Status draw_tiled_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                 const frustum::MatrixPair<float>& camera, int columns, int rows) {
+                                 const frustum::MatrixPair<float>& camera, int columns, int rows, bool borders) {
+    constexpr const char* kWhere = "render::draw_tiled_frame()";
     auto tiles = frustum::crop_tiles(camera, frame.width(), frame.height(), columns, rows);
     if (!tiles) {
-        return frustum::Error{"render::draw_tiled_frame(): " + tiles.error()};
+        return frustum::Error{std::string(kWhere) + ": " + tiles.error()};
     }
-    return draw_tiles(ctx, frame, *tiles, -1, "render::draw_tiled_frame()");
+    if (auto status = draw_tiles(ctx, frame, *tiles, -1, kWhere); !status || !borders) {
+        return status;
+    }
+    draw_tile_borders(ctx, *tiles, kTileBorderColor);
+    frame.bind();
+    return gl::check_error(ctx.fn, kWhere);
 }
 
 } // namespace render

@@ -25,9 +25,17 @@ namespace render {
 frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& frame,
                            const std::vector<frustum::Tile<float>>& tiles, int skip_instance, const char* where);
 
+// Paints a 1-pixel border along the left and bottom edge of every tile but
+// the first column and row (so each seam is one line) in `color`, with
+// scissored clears. Leaves the scissor test off.
+void draw_tile_borders(const PassContext& ctx, const std::vector<frustum::Tile<float>>& tiles,
+                       const glm::vec4& color);
+
 // Needs 1 <= columns <= frame width and 1 <= rows <= frame height. Leaves
 // `frame` bound with its full viewport and the scissor test off.
+// borders: draw_tile_borders() over the frame.
 frustum::Status draw_tiled_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                 const frustum::MatrixPair<float>& camera, int columns, int rows);
+                                 const frustum::MatrixPair<float>& camera, int columns, int rows,
+                                 bool borders = false);
 
 } // namespace render

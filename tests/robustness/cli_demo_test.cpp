@@ -73,6 +73,20 @@ const std::vector<DemoCase>& demo_cases() {
         {"--msaa beyond the context", render({"--effect", "plain", "--msaa", "64"}), 1,
          {"frustum-demo: error: --msaa 64: gl::choose_samples(): 64 samples requested, but this context offers 1 to "},
          Out::NoFiles},
+        {"--slit 0", render({"--slit", "0"}), 2, {"--slit must be a depth in (0, 1000] metres, got '0'"}, Out::NotCreated},
+        {"--lens-radius 2", render({"--lens-radius", "2"}), 2,
+         {"--lens-radius must be a fraction of the frame's half height in (0, 1], got '2'"}, Out::NotCreated},
+        {"--lens-center 0", render({"--lens-center", "0"}), 2, {"--lens-center must be x,y", "got '0'"}, Out::NotCreated},
+        {"--mirror-rect with parallel sides", render({"--mirror-rect", "0,0,0,1,0,0,2,0,0"}), 2,
+         {"--mirror-rect must be cx,cy,cz,ax,ay,az,bx,by,bz", "'0,0,0,1,0,0,2,0,0'"}, Out::NotCreated},
+        {"--mirror-plane with 3 numbers", render({"--mirror-plane", "0,1,0"}), 2, {"--mirror-plane must be a,b,c,d"},
+         Out::NotCreated},
+        {"both mirror placements", render({"--mirror-plane", "0,1,0,0", "--mirror-rect", "0,0,0,1,0,0,0,1,0"}), 2,
+         {"--mirror-plane and --mirror-rect both place the mirror"}, Out::NotCreated},
+        {"--pivot beyond the far plane", render({"--effect", "nonaffine", "--pivot", "900", "--size", "64x36"}), 1,
+         {"nonaffine: --pivot 900 must be less than the far distance"}, Out::NoFiles},
+        {"--sagitta too large for the mirror", render({"--effect", "curved", "--sagitta", "50", "--size", "64x36"}), 1,
+         {"curved: --sagitta 50 must be in [0, "}, Out::NoFiles},
         {"empty --out", [](const rob::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
          {"--out needs a folder"}, Out::NotCreated},
         {"--scene without a value", [](const rob::TempDir& d) {
@@ -159,6 +173,25 @@ TEST_CASE("frustum-demo: usage errors exit 2, runtime failures exit 1, nothing w
         }
         CHECK_MESSAGE(leftovers(dir.path()).empty(), "left behind: ", joined(leftovers(dir.path())));
     }
+}
+
+TEST_CASE("frustum-demo: an effect of several that fails leaves the others and the sheet, exit 1 naming it") {
+    rob::TempDir dir;
+    rob::Launch launch;
+    launch.args = {"render", "--pivot", "900", "--size", "64x36", "--out", (dir / "out").string()};
+    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    CAPTURE(r.err);
+    if (no_gl(r)) return;
+    CHECK(r.exit_status == 1);
+    CHECK(r.err.find("frustum-demo: error: effect nonaffine: --pivot 900 must be less than the far distance") !=
+          std::string::npos);
+    for (const char* name : {"plain", "mirror", "tiles", "frustum", "curved", "lens", "contact_sheet"}) {
+        CAPTURE(name);
+        const std::string path = (dir / "out" / (std::string(name) + ".png")).string();
+        CHECK(fs::exists(path));
+        CHECK(r.out.find(path + "\n") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(dir / "out" / "nonaffine.png"));
 }
 
 TEST_CASE("frustum-demo: a write that fails midway (file size limit) leaves no PNG and no temp file") {

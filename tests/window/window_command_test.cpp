@@ -157,7 +157,11 @@ TEST_CASE("window usage errors exit 2 before opening anything") {
         {{"--frames", "x"}, "--frames must be 1..1000000, got 'x'"},
         {{"--screenshot", "a.png"}, "--screenshot needs --frames N"},
         {{"--size", "0x10"}, "--size must be WxH with 1..8192 each, got '0x10'"},
-        {{"--tiles", "17x1"}, "--tiles must be NxM (columns x rows, 1..16 each), got '17x1'"},
+        {{"--tiles", "0x1"}, "--tiles must be NxM (columns x rows, each >= 1), got '0x1'"},
+        {{"--slit", "-1"}, "--slit must be a depth in (0, 1000] metres, got '-1'"},
+        {{"--lens-center", "2,0"}, "--lens-center must be x,y with each in [-1, 1]"},
+        {{"--mirror-plane", "0,0,0,1"}, "--mirror-plane must be a,b,c,d"},
+        {{"--keys", "Ctrl+X"}, "--keys must be a comma-separated list of keys"},
         {{"--effect", "sepia"}, "unknown effect 'sepia' (expected plain, mirror, tiles, frustum"},
         {{"--mirror", "flat"}, "unknown mirror method 'flat'"},
         {{"--msaa", "0"}, "--msaa must be a sample count in 1..64 (1 = off), got '0'"},
@@ -179,6 +183,49 @@ TEST_CASE("window --help lists the options") {
     CHECK(child.exit_status == 0);
     for (const char* option : {"--scene", "--size", "--effect", "--frames", "--screenshot", "--help-overlay", "--inset", "--msaa"}) {
         CHECK(child.out.find(option) != std::string::npos);
+    }
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("window") {
+
+// The effect options come from one table: both commands list the same
+// ones in --help and refuse the same bad value with the same message.
+TEST_CASE("render and window share every effect option, with the same messages") {
+    const Child render_help = window_test::run(kDemo, {"--help"});
+    const Child window_help = window_test::run(kDemo, {"window", "--help"});
+    REQUIRE(render_help.exit_status == 0);
+    REQUIRE(window_help.exit_status == 0);
+    const auto section = [](const std::string& help) {
+        const std::size_t start = help.find("effect options");
+        REQUIRE(start != std::string::npos);
+        return help.substr(start, help.find("\nUnset", start) - start);
+    };
+    const std::string render_options = section(render_help.out);
+    CHECK(render_options.substr(render_options.find('\n')) ==
+          section(window_help.out).substr(section(window_help.out).find('\n')));
+    std::vector<std::string> names;
+    for (std::size_t at = render_options.find("\n  --"); at != std::string::npos;
+         at = render_options.find("\n  --", at + 1)) {
+        const std::size_t end = render_options.find(' ', at + 3);
+        names.push_back(render_options.substr(at + 3, end - at - 3));
+    }
+    CHECK(names.size() >= 14);
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        if (name == "--tile-borders") {
+            continue; // a flag: no value to refuse
+        }
+        const Child r = window_test::run(kDemo, {"render", name, "bogus!"});
+        const Child w = window_test::run(kDemo, {"window", name, "bogus!"}, {{"DISPLAY", std::nullopt}});
+        CHECK(r.exit_status == 2);
+        CHECK(w.exit_status == 2);
+        const std::string r_prefix = "frustum-demo: error: ", w_prefix = "frustum-demo window: error: ";
+        REQUIRE(r.err.rfind(r_prefix, 0) == 0);
+        REQUIRE(w.err.rfind(w_prefix, 0) == 0);
+        CHECK(r.err.substr(r_prefix.size()) == w.err.substr(w_prefix.size()));
+        CHECK(r.err.find("bogus!") != std::string::npos);
     }
 }
 

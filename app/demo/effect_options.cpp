@@ -1,0 +1,231 @@
+#include "demo/effect_options.hpp"
+
+#include "demo/option_values.hpp"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <tuple>
+#include <utility>
+
+namespace demo {
+namespace {
+
+constexpr float kMaxDepthM = 1000.0f; // --slit, --pivot (as nonaffine-report)
+
+Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
+std::string got(const std::string& value) { return ", got '" + value + "'"; }
+
+std::optional<Failure> apply_tiles(EffectSettings& s, const std::string& value) {
+    const auto tiles = parse_pair(value, kMaxTileSide);
+    if (!tiles) {
+        return usage("--tiles must be NxM (columns x rows, each >= 1)" + got(value));
+    }
+    std::tie(s.tile_columns, s.tile_rows) = *tiles;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_tile_borders(EffectSettings& s, const std::string&) {
+    s.tile_borders = true;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_mirror(EffectSettings& s, const std::string& value) {
+    const auto method = render::parse_mirror_method(value);
+    if (!method) {
+        return usage("unknown mirror method '" + value + "' (expected oblique, rectangle or reflect_only)");
+    }
+    s.mirror = *method;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_mirror_plane(EffectSettings& s, const std::string& value) {
+    const auto v = parse_numbers(value, 4);
+    if (!v || glm::length(glm::vec3((*v)[0], (*v)[1], (*v)[2])) < 1e-6f) {
+        return usage("--mirror-plane must be a,b,c,d (the plane a x + b y + c z + d = 0, finite numbers, "
+                     "(a, b, c) not zero)" + got(value));
+    }
+    s.mirror_place.plane = glm::vec4((*v)[0], (*v)[1], (*v)[2], (*v)[3]);
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_mirror_rect(EffectSettings& s, const std::string& value) {
+    const auto v = parse_numbers(value, 9);
+    if (!v || glm::length(glm::cross(glm::vec3((*v)[3], (*v)[4], (*v)[5]), glm::vec3((*v)[6], (*v)[7], (*v)[8]))) <
+                  1e-9f) {
+        return usage("--mirror-rect must be cx,cy,cz,ax,ay,az,bx,by,bz (centre and two sides, finite numbers, "
+                     "the sides neither zero nor parallel)" + got(value));
+    }
+    std::array<float, 9> rect{};
+    std::copy(v->begin(), v->end(), rect.begin());
+    s.mirror_place.rect = rect;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_patches(EffectSettings& s, const std::string& value) {
+    const auto patches = parse_count(value, render::kMaxCurvedPatches);
+    if (!patches) {
+        return usage("--patches must be a whole number in 1.." + std::to_string(render::kMaxCurvedPatches) +
+                     got(value));
+    }
+    s.curved.patches = *patches;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_sagitta(EffectSettings& s, const std::string& value) {
+    const auto sagitta_m = parse_number(value);
+    if (!sagitta_m || !(*sagitta_m >= 0.0f)) {
+        return usage("--sagitta must be a length in metres >= 0" + got(value));
+    }
+    s.curved.sagitta_m = *sagitta_m;
+    s.sagitta_given = true;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_cap(EffectSettings& s, const std::string& value) {
+    const auto shape = render::parse_cap_shape(value);
+    if (!shape) {
+        return usage("unknown cap shape '" + value + "' (expected sphere or cylinder)");
+    }
+    s.curved.shape = *shape;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_lens_grid(EffectSettings& s, const std::string& value) {
+    const auto grid = parse_count(value, kMaxLensGrid);
+    if (!grid) {
+        return usage("--lens-grid must be a whole number in 1.." + std::to_string(kMaxLensGrid) + got(value));
+    }
+    s.lens_grid = *grid;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_lens_power(EffectSettings& s, const std::string& value) {
+    const auto power = parse_number(value);
+    if (!power || !(*power > 0.0f && *power <= kMaxLensPower)) {
+        return usage("--lens-power must be a number in (0, 2]" + got(value));
+    }
+    s.lens_power = *power;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_lens_center(EffectSettings& s, const std::string& value) {
+    const auto v = parse_numbers(value, 2);
+    if (!v || std::abs((*v)[0]) > 1.0f || std::abs((*v)[1]) > 1.0f) {
+        return usage("--lens-center must be x,y with each in [-1, 1] (0,0 is the frame's centre, 1,1 its top "
+                     "right corner)" + got(value));
+    }
+    s.fit.lens_center = glm::vec2((*v)[0], (*v)[1]);
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_lens_radius(EffectSettings& s, const std::string& value) {
+    const auto radius = parse_number(value);
+    if (!radius || !(*radius > 0.0f && *radius <= 1.0f)) {
+        return usage("--lens-radius must be a fraction of the frame's half height in (0, 1]" + got(value));
+    }
+    s.fit.lens_radius = *radius;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_depth(std::optional<float>& slot, const char* name, const std::string& value) {
+    const auto depth_m = parse_number(value);
+    if (!depth_m || !(*depth_m > 0.0f && *depth_m <= kMaxDepthM)) {
+        return usage(std::string(name) + " must be a depth in (0, 1000] metres" + got(value));
+    }
+    slot = *depth_m;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_slit(EffectSettings& s, const std::string& value) {
+    return apply_depth(s.fit.slit_m, "--slit", value);
+}
+
+std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) {
+    return apply_depth(s.fit.pivot_m, "--pivot", value);
+}
+
+} // namespace
+
+const std::vector<EffectOption>& effect_options() {
+    static const std::vector<EffectOption> table = {
+        {"--tiles", "NxM", "tiles effect: columns x rows, each >= 1 and at most one per pixel (default 3x2)",
+         apply_tiles},
+        {"--tile-borders", nullptr, "tiles effect: draw each tile's border", apply_tile_borders},
+        {"--mirror", "M",
+         "reflection camera: oblique (reflect + oblique near plane, default) |\n"
+         "rectangle (reflected eye through the mirror) | reflect_only (no near\n"
+         "plane: shows what is behind the mirror)",
+         apply_mirror},
+        {"--mirror-plane", "a,b,c,d",
+         "a mirror on the plane a x + b y + c z + d = 0, reflecting towards\n"
+         "(a, b, c): a square of the model's diagonal under the model's centre\n"
+         "(default: the scene's node \"mirror\", else a floor under the model)",
+         apply_mirror_plane},
+        {"--mirror-rect", "c,a,b",
+         "a mirror rectangle: nine numbers cx,cy,cz,ax,ay,az,bx,by,bz, its centre\n"
+         "and two sides; reflects towards a x b",
+         apply_mirror_rect},
+        {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches},
+        {"--sagitta", "M",
+         "curved effect: the cap's bulge at its centre in metres (default a fifth\n"
+         "of the mirror's half-diagonal; 0 = the planar mirror; at most half of it)",
+         apply_sagitta},
+        {"--cap", "C", "curved effect: sphere (default) | cylinder (axis along the mirror's\nsecond side)",
+         apply_cap},
+        {"--lens-grid", "N", "lens effect: N x N tiles, 1..128 (default 16, at most one per pixel)",
+         apply_lens_grid},
+        {"--lens-power", "P", "lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens; stronger powers make tiles degenerate in single precision)", apply_lens_power},
+        {"--lens-center", "x,y",
+         "lens effect: the lens centre in the frame, each in [-1, 1] (default:\n"
+         "the scene's lens node, else the model's centre as seen)",
+         apply_lens_center},
+        {"--lens-radius", "R",
+         "lens effect: the lens radius as a fraction of the frame's half height,\n"
+         "(0, 1] (default: the lens node's, else half the model's as seen,\n"
+         "within 0.1..0.4)",
+         apply_lens_radius},
+        {"--slit", "M",
+         "nonaffine effect: the slit's depth in front of the eye, (0, 1000] m,\n"
+         "below --pivot (default a third of the pivot)",
+         apply_slit},
+        {"--pivot", "M",
+         "nonaffine effect: where the slit planes meet the camera's side planes,\n"
+         "(0, 1000] m, below the far distance (default: the model centre's depth)",
+         apply_pivot},
+    };
+    return table;
+}
+
+const EffectOption* find_effect_option(std::string_view name) {
+    for (const EffectOption& option : effect_options()) {
+        if (name == option.name) {
+            return &option;
+        }
+    }
+    return nullptr;
+}
+
+std::string effect_options_help() {
+    constexpr std::size_t kColumn = 22; // "  --lens-center x,y   "
+    std::string text;
+    for (const EffectOption& option : effect_options()) {
+        std::string head = std::string("  ") + option.name + (option.value ? std::string(" ") + option.value : "");
+        head.resize(std::max(kColumn, head.size() + 1), ' ');
+        std::string help = option.help;
+        for (std::size_t at = help.find('\n'); at != std::string::npos; at = help.find('\n', at + 1)) {
+            help.insert(at + 1, std::string(kColumn, ' '));
+        }
+        text += head + help + "\n";
+    }
+    return text;
+}
+
+std::optional<Failure> check_effect_settings(const EffectSettings& settings) {
+    if (settings.mirror_place.plane && settings.mirror_place.rect) {
+        return usage("--mirror-plane and --mirror-rect both place the mirror; give one of them");
+    }
+    return std::nullopt;
+}
+
+} // namespace demo

@@ -1,0 +1,34 @@
+// A mirror for every scene (docs/any-scene.md). A scene with a node named
+// "mirror" keeps it unless the command line places one by hand; a scene
+// without one gets a floor mirror under its bounding box, as three.js's
+// webgl_mirror example does. The placed mirror is a quad mesh and instance
+// added to the scene (so every effect, the plain frame included, sees it);
+// world_bounds stay those of the model. Pure: no GL.
+#pragma once
+
+#include <scene/scene.hpp>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace render {
+
+// --mirror-plane / --mirror-rect (at most one is set; the parser checks
+// that the plane's normal and the rectangle's sides are not degenerate).
+struct MirrorRequest {
+    std::optional<glm::vec4> plane; // a x + b y + c z + d = 0, reflecting towards (a, b, c)
+    // centre c, first side a, second side b (full lengths, world units);
+    // reflects towards a x b.
+    std::optional<std::array<float, 9>> rect;
+    bool by_hand() const { return plane || rect; }
+};
+
+// Gives `scene` the mirror `request` asks for and says where it went, e.g.
+// "mirror: floor under the model, y = -0.51, 2.6 x 2.6 (the scene has no node named mirror)";
+// empty when the scene's own mirror is kept.
+std::optional<std::string> place_mirror(scene::Scene& scene, const MirrorRequest& request);
+
+} // namespace render
