@@ -3,6 +3,10 @@
 #include "vectors/camera.hpp"
 
 #include <frustum/crop.hpp>
+#include <frustum/culling.hpp>
+#include <frustum/jitter.hpp>
+#include <frustum/portal.hpp>
+#include <frustum/screen_rect.hpp>
 #include <frustum/mirror.hpp>
 #include <frustum/oblique_clip.hpp>
 #include <frustum/projection.hpp>
@@ -29,6 +33,13 @@ PairResult apply_op(const Pair& pair, const Op& op) {
                                              crop->height, crop->full_width, crop->full_height};
         return frustum::crop(pair, rect); // §5.1
     }
+    if (const auto* j = std::get_if<JitterOp>(&op)) {
+        return frustum::jitter(pair, j->dx, j->dy, j->full_width, j->full_height);
+    }
+    if (const auto* portal = std::get_if<PortalOp>(&op)) {
+        const auto frame = [](const FrameSpec& f) { return frustum::Frame<double>{f.origin, f.x, f.y}; };
+        return frustum::portal(pair, frame(portal->entry), frame(portal->exit));
+    }
     const auto& plane_op = std::get<PlaneOp>(op);
     const frustum::Plane<double> plane(plane_op.plane);
     switch (plane_op.kind) {
@@ -42,6 +53,12 @@ PairResult apply_op(const Pair& pair, const Op& op) {
 const char* op_key(const Op& op) {
     if (std::holds_alternative<CropOp>(op)) {
         return "crop";
+    }
+    if (std::holds_alternative<JitterOp>(op)) {
+        return "jitter";
+    }
+    if (std::holds_alternative<PortalOp>(op)) {
+        return "portal";
     }
     return op_name(std::get<PlaneOp>(op).kind);
 }
@@ -196,6 +213,33 @@ Outcome evaluate_case(const Case& c) {
             }
             a.clip->push_back(a.matrix * Vec4(p, 1.0));
             a.inside->push_back(inside(a.planes, p));
+        }
+    }
+    if (c.rects) {
+        a.screen_rects.emplace();
+        for (std::size_t i = 0; i < c.rects->size(); ++i) {
+            const RectQuery& q = (*c.rects)[i];
+            const auto rect = frustum::screen_rect(*pair, q.corners, q.full_width, q.full_height);
+            if (!rect) {
+                return failure(c.id, "rects[" + std::to_string(i) + "]: " + rect.error());
+            }
+            a.screen_rects->push_back(*rect);
+        }
+    }
+    if (c.boxes) {
+        a.cull.emplace();
+        const frustum::FrustumPlanes<double> unit = frustum::planes(*pair);
+        for (std::size_t i = 0; i < c.boxes->size(); ++i) {
+            const BoxQuery& b = (*c.boxes)[i];
+            if (!finite(Vec4(b.min, 1.0)) || !finite(Vec4(b.max, 1.0))) {
+                return failure(c.id, "boxes[" + std::to_string(i) + "]: min and max must be finite, got min=" +
+                                         text(b.min) + " max=" + text(b.max));
+            }
+            if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) {
+                return failure(c.id, "boxes[" + std::to_string(i) + "]: min must not exceed max, got min=" +
+                                         text(b.min) + " max=" + text(b.max));
+            }
+            a.cull->push_back(frustum::to_string(frustum::classify(unit, frustum::Aabb<double>{b.min, b.max})));
         }
     }
     if (const char* field = non_finite_field(a)) {

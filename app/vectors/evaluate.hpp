@@ -3,6 +3,8 @@
 
 #include "vectors/request.hpp"
 
+#include <frustum/crop.hpp>
+
 #include <array>
 #include <optional>
 #include <string>
@@ -31,6 +33,11 @@ struct Answer {
     // Only when the request has "points": M * [p, 1] and the inside test.
     std::optional<std::vector<Vec4>> clip;
     std::optional<std::vector<bool>> inside;
+    // Version 2, only when the request has "rects" / "boxes": the pixel
+    // rectangle of each polygon (empty: nothing visible) and the cull word
+    // ("outside", "intersect", "inside") of each box.
+    std::optional<std::vector<std::optional<frustum::CropRect<double>>>> screen_rects;
+    std::optional<std::vector<std::string>> cull;
 };
 
 struct Outcome {
@@ -48,7 +55,8 @@ inline constexpr double kInsideTolerance = 1e-6;
 // library error, any number of the answer that is not finite, or a point
 // that cannot be put in canonical form (|xyz| over- or underflows), makes
 // the case ok = false; the error names where it arose ("camera.planes: ...",
-// "view: ...", "ops[1].clip: ...", "points[0]: ...", "planes: ...", "result: ...").
+// "view: ...", "ops[1].clip: ...", "points[0]: ...", "rects[0]: ...", "boxes[0]: ...",
+// "planes: ...", "result: ...").
 Outcome evaluate_case(const Case& c);
 
 } // namespace vectors

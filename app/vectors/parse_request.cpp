@@ -281,10 +281,29 @@ View view(const json& value, const std::string& path) {
     return View{vec3_at(value, path, "eye"), vec3_at(value, path, "target"), vec3_at(value, path, "up")};
 }
 
+FrameSpec frame(const json& value, const std::string& path) {
+    object(value, path, {"origin", "x", "y"});
+    return FrameSpec{vec3_at(value, path, "origin"), vec3_at(value, path, "x"), vec3_at(value, path, "y")};
+}
+
 Op op(const json& value, const std::string& path) {
-    const std::string kind = one_kind(value, path, {"crop", "reflect", "clip", "mirror"});
+    const std::string kind = one_kind(value, path, {"crop", "reflect", "clip", "mirror", "jitter", "portal"});
     const json& body = value.front();
     const std::string body_path = child(path, kind);
+    if (kind == "jitter") {
+        object(body, body_path, {"dx", "dy", "full_width", "full_height"});
+        JitterOp j;
+        j.dx = number_at(body, body_path, "dx");
+        j.dy = number_at(body, body_path, "dy");
+        j.full_width = number_at(body, body_path, "full_width");
+        j.full_height = number_at(body, body_path, "full_height");
+        return j;
+    }
+    if (kind == "portal") {
+        object(body, body_path, {"entry", "exit"});
+        return PortalOp{frame(required(body, body_path, "entry"), child(body_path, "entry")),
+                        frame(required(body, body_path, "exit"), child(body_path, "exit"))};
+    }
     if (kind == "crop") {
         object(body, body_path, {"x", "y", "width", "height", "full_width", "full_height"});
         CropOp c;
@@ -312,8 +331,29 @@ const json& array(const json& value, const std::string& path) {
     return value;
 }
 
+RectQuery rect_query(const json& value, const std::string& path) {
+    object(value, path, {"corners", "full_width", "full_height"});
+    RectQuery r;
+    const std::string corners_path = child(path, "corners");
+    const json& corners = array(required(value, path, "corners"), corners_path);
+    if (corners.size() < 3) {
+        fail(corners_path, "expected an array of 3 or more points, got " + std::to_string(corners.size()) + " elements");
+    }
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        r.corners.push_back(vec3(corners[i], element(corners_path, i)));
+    }
+    r.full_width = number_at(value, path, "full_width");
+    r.full_height = number_at(value, path, "full_height");
+    return r;
+}
+
+BoxQuery box_query(const json& value, const std::string& path) {
+    object(value, path, {"min", "max"});
+    return BoxQuery{vec3_at(value, path, "min"), vec3_at(value, path, "max")};
+}
+
 Case one_case(const json& value, const std::string& path) {
-    object(value, path, {"id", "depth", "camera", "view", "ops", "points"});
+    object(value, path, {"id", "depth", "camera", "view", "ops", "points", "rects", "boxes"});
     Case c;
     c.id = string(required(value, path, "id"), child(path, "id"));
     if (const json* depth = optional(value, "depth")) {
@@ -338,6 +378,20 @@ Case one_case(const json& value, const std::string& path) {
         c.points.emplace();
         for (std::size_t i = 0; i < array(*points, points_path).size(); ++i) {
             c.points->push_back(vec3((*points)[i], element(points_path, i)));
+        }
+    }
+    if (const json* rects = optional(value, "rects")) {
+        const std::string rects_path = child(path, "rects");
+        c.rects.emplace();
+        for (std::size_t i = 0; i < array(*rects, rects_path).size(); ++i) {
+            c.rects->push_back(rect_query((*rects)[i], element(rects_path, i)));
+        }
+    }
+    if (const json* boxes = optional(value, "boxes")) {
+        const std::string boxes_path = child(path, "boxes");
+        c.boxes.emplace();
+        for (std::size_t i = 0; i < array(*boxes, boxes_path).size(); ++i) {
+            c.boxes->push_back(box_query((*boxes)[i], element(boxes_path, i)));
         }
     }
     return c;

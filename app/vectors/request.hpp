@@ -75,7 +75,33 @@ struct PlaneOp {
     Vec4 plane{0};
 };
 
-using Op = std::variant<CropOp, PlaneOp>;
+// "jitter" (version 2): the image shifted by (dx, dy) pixels of a
+// full_width x full_height image.
+struct JitterOp {
+    double dx = 0, dy = 0, full_width = 0, full_height = 0;
+};
+
+// "portal" (version 2): a frame is an origin and unit, orthogonal x and y.
+struct FrameSpec {
+    Vec3 origin{0}, x{0}, y{0};
+};
+struct PortalOp {
+    FrameSpec entry, exit;
+};
+
+using Op = std::variant<CropOp, PlaneOp, JitterOp, PortalOp>;
+
+// Case-level "rects" (version 2): a convex planar polygon in world space
+// and the image it is measured in; answered by "screen_rects".
+struct RectQuery {
+    std::vector<Vec3> corners;
+    double full_width = 0, full_height = 0;
+};
+
+// Case-level "boxes" (version 2): an axis-aligned box; answered by "cull".
+struct BoxQuery {
+    Vec3 min{0}, max{0};
+};
 
 struct Case {
     std::string id;
@@ -84,6 +110,8 @@ struct Case {
     std::optional<View> view;              // absent: identity
     std::vector<Op> ops;                   // applied in order
     std::optional<std::vector<Vec3>> points; // absent: no "clip"/"inside" in the answer
+    std::optional<std::vector<RectQuery>> rects; // absent: no "screen_rects"
+    std::optional<std::vector<BoxQuery>> boxes;  // absent: no "cull"
 };
 
 struct Request {

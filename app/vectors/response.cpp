@@ -55,6 +55,25 @@ void append_answer(ordered_json& out, const Answer& a) {
         }
         out["inside"] = std::move(inside);
     }
+    if (a.screen_rects) {
+        ordered_json rects = ordered_json::array();
+        for (const auto& r : *a.screen_rects) {
+            if (!r) {
+                rects.push_back(nullptr);
+                continue;
+            }
+            ordered_json rect = ordered_json::object();
+            rect["x"] = r->x;
+            rect["y"] = r->y;
+            rect["width"] = r->width;
+            rect["height"] = r->height;
+            rects.push_back(std::move(rect));
+        }
+        out["screen_rects"] = std::move(rects);
+    }
+    if (a.cull) {
+        out["cull"] = *a.cull;
+    }
 }
 
 } // namespace

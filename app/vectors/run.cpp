@@ -66,8 +66,16 @@ double. The contract is docs/vectors-contract.md; in short:
   view:   optional {eye, target, up}; the matrix is P * V
   ops:    optional, in order: {"crop": {x, y, width, height, full_width,
           full_height}} (offset from the bottom-left), {"reflect": {plane}},
-          {"clip": {plane}}, {"mirror": {plane}}; plane = [a,b,c,d]
+          {"clip": {plane}}, {"mirror": {plane}}; plane = [a,b,c,d];
+          version 2: {"jitter": {dx, dy, full_width, full_height}} (pixels,
+          + is right/up), {"portal": {entry: FRAME, exit: FRAME}} with
+          FRAME = {origin, x, y} (x, y unit and orthogonal within 1e-6)
   points: optional [[x,y,z], ...]
+  rects:  optional (version 2) [{corners: [[x,y,z] x 3+], full_width,
+          full_height}]: answered by "screen_rects", {x, y, width, height}
+          in pixels from the bottom-left, or null when nothing is visible
+  boxes:  optional (version 2) [{min: [x,y,z], max: [x,y,z]}]: answered by
+          "cull", "outside" | "intersect" | "inside" per box
 
 Choices where the contract leaves room:
   - "id" (a string) and "camera" are required; every other top-level,
@@ -80,10 +88,13 @@ Choices where the contract leaves room:
   - A key repeated in one object is malformed JSON (exit 2).
   - "inside": every normalized plane (n, d), far plane only when finite,
     has n.p + d >= -1e-6 (|p| + |d|).
-  - "clip" and "inside" appear when "points" is given (even empty).
+  - "clip" and "inside" appear when "points" is given (even empty); the
+    same for "screen_rects" with "rects" and "cull" with "boxes".
+  - A screen rectangle seen only edge-on (zero width or height) is null.
+  - A box with a non-finite coordinate or min > max makes its case ok: false.
   - A case whose answer would hold a non-finite number is ok: false.
   - ok: false errors read "<where>: <library message>", where is camera.<kind>,
-    view, ops[i].<op>, points[i], planes or result.
+    view, ops[i].<op>, points[i], rects[i], boxes[i], planes or result.
 
 Exit status:
   0  the request was well-formed (each case has "ok": true or false)

@@ -72,7 +72,7 @@ TEST_CASE("vectors: request shape errors are exit 2 and name the place") {
         {R"({"cases": [{"id": 3}]})", "cases[0].id: expected a string, got number"},
         {R"({"cases": [{"id": "x"}]})", "cases[0].camera: missing required key"},
         {one(R"("camera": )" + kGoodCamera + R"(, "colour": "red")"),
-         "cases[0].colour: unknown key (expected one of id, depth, camera, view, ops, points)"},
+         "cases[0].colour: unknown key (expected one of id, depth, camera, view, ops, points, rects, boxes)"},
         {one(R"("depth": "", "camera": )" + kGoodCamera),
          "cases[0].depth: unknown depth range \"\" (expected zero_to_one, minus_one_to_one or reversed_zero_to_one)"},
         {one(R"("depth": "zero_to_two", "camera": )" + kGoodCamera),
@@ -132,9 +132,9 @@ TEST_CASE("vectors: request shape errors are exit 2 and name the place") {
         // ops
         {with_ops("{}"), "cases[0].ops: expected an array, got object"},
         {with_ops("[[]]"), "cases[0].ops[0]: expected an object, got array"},
-        {with_ops(R"([{"rotate": {"angle": 1}}])"), "cases[0].ops[0].rotate: unknown key (expected one of crop, reflect, clip, mirror)"},
+        {with_ops(R"([{"rotate": {"angle": 1}}])"), "cases[0].ops[0].rotate: unknown key (expected one of crop, reflect, clip, mirror, jitter, portal)"},
         {with_ops(R"([{"reflect": {"plane": [0, 1, 0, 0]}, "clip": {"plane": [0, 1, 0, 0]}}])"),
-         "cases[0].ops[0]: expected exactly one of crop, reflect, clip, mirror, got 2: clip, reflect"},
+         "cases[0].ops[0]: expected exactly one of crop, reflect, clip, mirror, jitter, portal, got 2: clip, reflect"},
         {with_ops(R"([{"crop": {"x": 0, "y": 0, "width": 1, "full_width": 2, "full_height": 2}}])"),
          "cases[0].ops[0].crop.height: missing required key"},
         {with_ops(R"([{"crop": {"x": 0, "y": 0, "w": 1, "width": 1, "height": 1, "full_width": 2, "full_height": 2}}])"),
@@ -156,7 +156,7 @@ TEST_CASE("vectors: request shape errors are exit 2 and name the place") {
 TEST_CASE("vectors: one malformed case rejects the whole document, even after good ones") {
     const std::string text = R"({"cases": [{"id": "good", "camera": )" + kGoodCamera + R"(},
                                            {"id": "bad", "camera": )" + kGoodCamera + R"(, "oops": 1}]})";
-    CHECK(rejected(text) == "frustum-vectors: cases[1].oops: unknown key (expected one of id, depth, camera, view, ops, points)\n");
+    CHECK(rejected(text) == "frustum-vectors: cases[1].oops: unknown key (expected one of id, depth, camera, view, ops, points, rects, boxes)\n");
 }
 
 TEST_CASE("vectors: impossible geometry is ok: false and the other cases are still answered") {

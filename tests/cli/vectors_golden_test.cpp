@@ -80,10 +80,22 @@ TEST_CASE("vectors golden: the tool still answers request-v1.json with response-
     }
 }
 
+TEST_CASE("vectors golden: the tool still answers request-v2.json with response-v2.json") {
+    const Run r = run_text(golden("request-v2.json"));
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    const json expected = json::parse(golden("response-v2.json"));
+    const json actual = json::parse(r.out);
+    REQUIRE(expected["cases"].size() == actual["cases"].size());
+    for (std::size_t i = 0; i < expected["cases"].size(); ++i) {
+        const json& e = expected["cases"][i];
+        compare(e, actual["cases"][i], "cases[" + std::to_string(i) + "] (" + e["id"].get<std::string>() + ")");
+    }
+}
+
 // The request holds 1e999, which nlohmann::json::parse refuses; the tool's
 // own reader turns it into infinity.
-json golden_request() {
-    const auto request = vectors::read_json(golden("request-v1.json"));
+json golden_request(const char* name = "request-v1.json") {
+    const auto request = vectors::read_json(golden(name));
     REQUIRE_MESSAGE(request.ok(), request.error());
     return *request;
 }
@@ -130,6 +142,57 @@ TEST_CASE("vectors golden: request-v1.json covers every camera, op, depth range 
     CHECK(with_points >= 20);
     CHECK(failures >= 20);
     CHECK(overflow >= 3);
+}
+
+TEST_CASE("vectors golden: request-v2.json covers portal, jitter, screen_rects, cull and their failures") {
+    const json cases = golden_request("request-v2.json")["cases"];
+    const json response = json::parse(golden("response-v2.json"))["cases"];
+    REQUIRE(cases.size() == response.size());
+    std::set<std::string> ops, depths, ids;
+    int rects = 0, null_rects = 0, failures = 0;
+    std::set<std::string> cull_words;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const json& c = cases[i];
+        const json& a = response[i];
+        CHECK(ids.insert(c["id"].get<std::string>()).second);
+        depths.insert(c.value("depth", std::string("zero_to_one")));
+        for (const json& op : c.value("ops", json::array())) {
+            ops.insert(op.begin().key());
+        }
+        if (!a["ok"].get<bool>()) {
+            ++failures;
+            CHECK(c["id"].get<std::string>().rfind("bad-", 0) == 0);
+            continue;
+        }
+        CHECK(c.contains("rects") == a.contains("screen_rects"));
+        CHECK(c.contains("boxes") == a.contains("cull"));
+        if (c.contains("rects")) {
+            REQUIRE(a["screen_rects"].size() == c["rects"].size());
+            for (const json& r : a["screen_rects"]) {
+                ++rects;
+                null_rects += r.is_null();
+            }
+        }
+        if (c.contains("boxes")) {
+            REQUIRE(a["cull"].size() == c["boxes"].size());
+            for (const json& w : a["cull"]) cull_words.insert(w.get<std::string>());
+        }
+    }
+    CHECK(ops.count("portal") == 1);
+    CHECK(ops.count("jitter") == 1);
+    CHECK(depths == std::set<std::string>{"zero_to_one", "minus_one_to_one", "reversed_zero_to_one"});
+    CHECK(cull_words == std::set<std::string>{"outside", "intersect", "inside"});
+    CHECK(rects >= 10);
+    CHECK(null_rects >= 3);
+    CHECK(failures >= 10);
+}
+
+TEST_CASE("vectors golden: version 1 files are untouched by version 2 (no v2 key in them)") {
+    const std::string request = golden("request-v1.json"), response = golden("response-v1.json");
+    for (const char* key : {"\"portal\"", "\"jitter\"", "\"rects\"", "\"boxes\"", "\"screen_rects\"", "\"cull\""}) {
+        CHECK(request.find(key) == std::string::npos);
+        CHECK(response.find(key) == std::string::npos);
+    }
 }
 
 TEST_CASE("vectors golden: every input of malformed-v1.json is exit 2, naming its place") {
