@@ -54,7 +54,8 @@ const CpuCases& cases() {
         const glm::vec3 eye0(cam.camera_to_world[3]);
         const glm::vec3 target = m.corner + 0.5f * (m.a1 + m.a2);
         for (int i = 0; i < kRing; ++i) {
-            const glm::vec3 eye = eye0 + glm::vec3(jitter(rng), jitter(rng), jitter(rng));
+            const float dz = jitter(rng), dy = jitter(rng), dx = jitter(rng); // one draw each, z first (as always)
+            const glm::vec3 eye = eye0 + glm::vec3(dx, dy, dz);
             const auto projection = frustum::perspective<float>(out.lens.fovy_rad, out.lens.aspect, out.lens.near_m,
                                                                 out.lens.far_m, frustum::DepthRange::ZeroToOne);
             const auto camera = frustum::compose(*projection, *frustum::look_at<float>(eye, target, {0, 1, 0}));

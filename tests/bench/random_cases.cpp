@@ -15,8 +15,12 @@ std::vector<MirrorCase> make_mirror_cases(int count, frustum::DepthRange depth, 
         const double far_m = near_m * positive(10.0, 2000.0);
         const double left = u(rng) * near_m, right = left + near_m * positive(0.2, 4.0);
         const double bottom = u(rng) * near_m, top = bottom + near_m * positive(0.2, 4.0);
-        const glm::dvec3 eye(5.0 * u(rng), positive(1.0, 7.0), 5.0 * u(rng));
-        const glm::dvec3 target(3.0 * u(rng), u(rng), 3.0 * u(rng));
+        // One draw per statement (argument order is unspecified), z first:
+        // the order these cases were always drawn in (docs' tables use them).
+        const double eye_z = 5.0 * u(rng), eye_y = positive(1.0, 7.0), eye_x = 5.0 * u(rng);
+        const glm::dvec3 eye(eye_x, eye_y, eye_z);
+        const double target_z = 3.0 * u(rng), target_y = u(rng), target_x = 3.0 * u(rng);
+        const glm::dvec3 target(target_x, target_y, target_z);
         auto projection = frustum::off_axis(left, right, bottom, top, near_m, std::optional<double>(far_m), depth);
         auto view = frustum::look_at(eye, target, glm::dvec3(0, 1, 0));
         if (!projection || !view) {
@@ -24,8 +28,10 @@ std::vector<MirrorCase> make_mirror_cases(int count, frustum::DepthRange depth, 
         }
         const auto camera = frustum::compose(*projection, *view);
         // A roughly horizontal mirror below the eye, tilted up to ~27 degrees.
-        const glm::dvec3 normal = glm::normalize(glm::dvec3(0.5 * u(rng), 1.0, 0.5 * u(rng)));
-        const glm::dvec3 on_plane(u(rng), 0.5 * u(rng), u(rng));
+        const double tilt_z = 0.5 * u(rng), tilt_x = 0.5 * u(rng);
+        const glm::dvec3 normal = glm::normalize(glm::dvec3(tilt_x, 1.0, tilt_z));
+        const double on_z = u(rng), on_y = 0.5 * u(rng), on_x = u(rng);
+        const glm::dvec3 on_plane(on_x, on_y, on_z);
         const frustum::Plane<double> plane(glm::dvec4(normal, -glm::dot(normal, on_plane)));
         if (!frustum::mirror(camera, plane)) {
             continue; // eye behind the mirror or nothing visible in it

@@ -49,9 +49,12 @@ TEST_CASE("vectors: malformed JSON is exit 2 with the line and column") {
         {"{\"a\": 1, \"a\": 2}", "invalid JSON at line 1, column 10: duplicate key \"a\""},
         {"{\"a\": \"unterminated}", "invalid JSON at line 1, column 21: unterminated string"},
     };
-    for (const auto& [text, message] : cases) {
+    for (const auto& c : cases) {
+        // Named references, not a structured binding: INFO captures its
+        // argument in a lambda, which may not capture bindings before C++20.
+        const auto& text = c.first;
         INFO("input: " << text);
-        CHECK(rejected(text) == std::string("frustum-vectors: ") + message + "\n");
+        CHECK(rejected(text) == std::string("frustum-vectors: ") + c.second + "\n");
     }
     const std::string deep = std::string(65, '[') + std::string(65, ']');
     CHECK(rejected(deep).find("nest deeper than 64 levels") != std::string::npos);
@@ -147,9 +150,12 @@ TEST_CASE("vectors: request shape errors are exit 2 and name the place") {
         {one(R"("camera": )" + kGoodCamera + R"(, "points": [[0, 0]])"), "cases[0].points[0]: expected an array of 3 numbers, got 2 elements"},
         {one(R"("camera": )" + kGoodCamera + R"(, "points": [[0, null, 0]])"), "cases[0].points[0][1]: expected a number, got null"},
     };
-    for (const auto& [text, message] : cases) {
+    for (const auto& c : cases) {
+        // Named references, not a structured binding: INFO captures its
+        // argument in a lambda, which may not capture bindings before C++20.
+        const auto& text = c.first;
         INFO("input: " << text);
-        CHECK(rejected(text) == std::string("frustum-vectors: ") + message + "\n");
+        CHECK(rejected(text) == std::string("frustum-vectors: ") + c.second + "\n");
     }
 }
 

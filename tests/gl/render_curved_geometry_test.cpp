@@ -66,7 +66,8 @@ TEST_CASE("the spherical cap passes through the mirror's corners and bulges by t
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int trial = 0; trial < 100; ++trial) {
-        const auto p = mirror.at(u(rng), u(rng));
+        const double v = u(rng), u_coord = u(rng); // one draw each, v first (as always)
+        const auto p = mirror.at(u_coord, v);
         CHECK(glm::length(p.position - sphere_center) == doctest::Approx(radius).epsilon(1e-12));
         CHECK(glm::length(p.normal - (p.position - sphere_center) / radius) < 1e-9);
     }
@@ -81,7 +82,8 @@ TEST_CASE("a ray aimed at a cap point meets the cap there, flat or curved") {
             INFO(render::to_string(shape) << " sagitta " << sagitta);
             const auto mirror = cap(sagitta, shape);
             for (int trial = 0; trial < 50; ++trial) {
-                const glm::dvec2 uv(u(rng), u(rng));
+                const double v = u(rng), u_coord = u(rng); // one draw each, v first (as always)
+                const glm::dvec2 uv(u_coord, v);
                 const glm::dvec3 target = mirror.at(uv.x, uv.y).position;
                 const auto hit = mirror.intersect(eye, glm::normalize(target - eye), 0.0);
                 REQUIRE(hit.has_value());
@@ -129,7 +131,8 @@ TEST_CASE("the volume gradient matches finite differences on curved patch target
         const auto p = plan(mirror, 4);
         for (const auto& patch : p.patches) {
             const auto target = render::patch_target(mirror, eye, 4, patch.i, patch.j);
-            const glm::dvec3 at = patch.origin + glm::dvec3(u(rng), u(rng), u(rng));
+            const double dz = u(rng), dy = u(rng), dx = u(rng); // one draw each, z first (as always)
+            const glm::dvec3 at = patch.origin + glm::dvec3(dx, dy, dz);
             glm::dvec3 gradient;
             frustum::volume_objective(target, at, &gradient);
             glm::dvec3 numeric;

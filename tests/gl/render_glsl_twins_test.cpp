@@ -137,17 +137,32 @@ Case random_case(std::mt19937& rng) {
                                           frustum::DepthRange::ReversedZeroToOne};
     const frustum::DepthRange depth = depths[rng() % 3];
     const float near_m = between(0.05f, 1.0f), far_m = near_m * between(10.0f, 1000.0f);
+    // One draw per statement (argument order is unspecified), last argument
+    // first: the order these cases were always drawn in.
+    const auto draw_zyx = [&](float half_x, float half_y, float half_z) {
+        const float z = between(-half_z, half_z), y = between(-half_y, half_y), x = between(-half_x, half_x);
+        return glm::vec3(x, y, z);
+    };
     const int kind = static_cast<int>(rng() % 3);
-    auto projection =
-        kind == 0 ? frustum::perspective<float>(between(0.3f, 2.0f), between(0.5f, 2.5f), near_m, far_m, depth)
-        : kind == 1
-            ? frustum::off_axis<float>(-between(0.01f, 1.0f), between(0.01f, 1.0f), -between(0.01f, 1.0f),
-                                       between(0.01f, 1.0f), near_m, far_m, depth)
-            : frustum::orthographic<float>(-between(1.0f, 5.0f), between(1.0f, 5.0f), -between(1.0f, 5.0f),
-                                           between(1.0f, 5.0f), -between(0.0f, 2.0f), between(5.0f, 50.0f), depth);
+    const auto make_projection = [&]() {
+        if (kind == 0) {
+            const float aspect = between(0.5f, 2.5f), fovy_rad = between(0.3f, 2.0f);
+            return frustum::perspective<float>(fovy_rad, aspect, near_m, far_m, depth);
+        }
+        if (kind == 1) {
+            const float top = between(0.01f, 1.0f), bottom = -between(0.01f, 1.0f);
+            const float right = between(0.01f, 1.0f), left = -between(0.01f, 1.0f);
+            return frustum::off_axis<float>(left, right, bottom, top, near_m, far_m, depth);
+        }
+        const float far_ortho = between(5.0f, 50.0f), near_ortho = -between(0.0f, 2.0f);
+        const float top = between(1.0f, 5.0f), bottom = -between(1.0f, 5.0f);
+        const float right = between(1.0f, 5.0f), left = -between(1.0f, 5.0f);
+        return frustum::orthographic<float>(left, right, bottom, top, near_ortho, far_ortho, depth);
+    };
+    auto projection = make_projection();
     REQUIRE_MESSAGE(projection.ok(), projection.error());
-    const glm::vec3 eye(between(-10.0f, 10.0f), between(-10.0f, 10.0f), between(-10.0f, 10.0f));
-    const glm::vec3 target = eye + glm::vec3(between(-1.0f, 1.0f), between(-0.5f, 0.5f), between(-1.0f, 1.0f));
+    const glm::vec3 eye = draw_zyx(10.0f, 10.0f, 10.0f);
+    const glm::vec3 target = eye + draw_zyx(1.0f, 0.5f, 1.0f);
     auto view = frustum::look_at<float>(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
     REQUIRE_MESSAGE(view.ok(), view.error());
     const frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
@@ -161,14 +176,13 @@ Case random_case(std::mt19937& rng) {
     const auto p = frustum::planes(pair);
     REQUIRE(p.far.has_value());
     const auto turned = [&](const frustum::Plane<float>& inward) {
-        const glm::vec3 n = glm::normalize(-inward.normal() + 0.1f * glm::vec3(between(-1.0f, 1.0f), between(-1.0f, 1.0f),
-                                                                               between(-1.0f, 1.0f)));
+        const glm::vec3 n = glm::normalize(-inward.normal() + 0.1f * draw_zyx(1.0f, 1.0f, 1.0f));
         const float distance_inside = inward.distance(centre); // keep D as far inside as it was
         return frustum::Plane<float>(glm::vec4(n, -glm::dot(n, centre) - distance_inside));
     };
-    auto outward = frustum::NonAffineFrustum<float>::from_planes(turned(p.left), turned(p.right), turned(p.bottom),
-                                                                turned(p.top), turned(p.near), turned(*p.far),
-                                                                centre, depth);
+    const auto far = turned(*p.far), near = turned(p.near), top = turned(p.top); // far first, as always
+    const auto bottom = turned(p.bottom), right = turned(p.right), left = turned(p.left);
+    auto outward = frustum::NonAffineFrustum<float>::from_planes(left, right, bottom, top, near, far, centre, depth);
     REQUIRE_MESSAGE(outward.ok(), outward.error());
     // A point between D and a near corner: inside the (turned) frustum near D.
     const glm::vec3 corner(frustum::to_point(frustum::key_points(pair).corners[rng() % 4], 1e-6f));

@@ -13,7 +13,10 @@ TEST_CASE("stitched tiles equal the full frame") {
     }
     const auto cameras = render_test::showcase_cameras();
     const image::Image full = r->render(render::Effect::Plain, cameras, render_test::options());
-    for (const auto& [columns, rows] : {std::pair{2, 2}, std::pair{3, 2}, std::pair{4, 4}}) {
+    for (const auto& grid : {std::pair{2, 2}, std::pair{3, 2}, std::pair{4, 4}}) {
+        // Plain ints, not a structured binding: INFO and MESSAGE capture in
+        // lambdas, which may not capture bindings before C++20.
+        const int columns = grid.first, rows = grid.second;
         INFO("tiles " << columns << "x" << rows);
         auto o = render_test::options();
         o.tile_columns = columns;

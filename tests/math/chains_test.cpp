@@ -82,10 +82,12 @@ TEST_CASE_TEMPLATE("16-operation random chains keep M * M^-1 = I", T, float, dou
                 next = frustum::uncrop(pair, r), history += " | uncrop";
                 break;
             }
-            case 2:
-                next = frustum::reflect(pair, Plane<T>(Vec4<T>(glm::dvec4(rng.unit_vector(), rng.uniform(-10, 10))))),
-                history += " | reflect";
+            case 2: {
+                const double offset = rng.uniform(-10, 10); // drawn before the normal, as always
+                const glm::dvec3 normal = rng.unit_vector();
+                next = frustum::reflect(pair, Plane<T>(Vec4<T>(glm::dvec4(normal, offset)))), history += " | reflect";
                 break;
+            }
             case 3: next = frustum::clip_oblique(pair, random_plane_through(rng, pair, true)), history += " | clip"; break;
             case 4: next = frustum::mirror(pair, random_plane_through(rng, pair, false)), history += " | mirror"; break;
             default: next = pair.with_depth_range(rng.depth()), history += " | depth"; break;

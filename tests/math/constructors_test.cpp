@@ -245,10 +245,15 @@ TEST_CASE_TEMPLATE("look_at: equals glm::lookAtRH, its inverse equals glm::inver
 
     Random rng(13);
     for (int i = 0; i < 300; ++i) {
-        const Vec3<T> eye(rng.in_box(50)), target(Vec3<T>(eye) + Vec3<T>(rng.unit_vector() * rng.uniform(0.1, 20)));
+        // One draw per statement (operand order is unspecified): the length
+        // before the direction, the order these cases were always drawn in.
+        const Vec3<T> eye(rng.in_box(50));
+        const double distance = rng.uniform(0.1, 20);
+        const Vec3<T> target(Vec3<T>(eye) + Vec3<T>(rng.unit_vector() * distance));
         Vec3<T> up;
         do {
-            up = Vec3<T>(rng.unit_vector() * rng.uniform(0.1, 10));
+            const double up_length = rng.uniform(0.1, 10);
+            up = Vec3<T>(rng.unit_vector() * up_length);
         } while (glm::length(glm::cross(glm::normalize(target - eye), glm::normalize(up))) < T(0.05));
         const auto view = frustum::look_at(eye, target, up);
         REQUIRE(view.ok());

@@ -116,7 +116,10 @@ TEST_CASE_TEMPLATE("mirror_rectangle Paper: the corners project onto the near fa
         const Rectangle<T> rect = square_mirror<T>();
         // z >= 1 keeps every corner in front of O' along the Paper axis:
         // (O' - C).(O' - P) >= |O'|^2 - |x| - |y| > 0 (see the next test).
-        const Vec3<T> eye(rng.uniform(-6, 6), rng.uniform(-6, 6), rng.uniform(1, 8));
+        const double eye_z = rng.uniform(1, 8); // one draw per statement, z first (as always)
+        const double eye_y = rng.uniform(-6, 6);
+        const double eye_x = rng.uniform(-6, 6);
+        const Vec3<T> eye(eye_x, eye_y, eye_z);
         const DepthRange depth = rng.depth();
         const auto m = frustum::mirror_rectangle(rect, eye, T(100), MirrorFit::Paper, depth);
         INFO("eye ", vec_text(eye));

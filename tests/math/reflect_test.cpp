@@ -39,7 +39,9 @@ TEST_CASE_TEMPLATE("reflect: M' = M R (the paper's R P transposed), twice is the
         INFO(c.text());
         // Any plane, either side facing the eye; unnormalized on purpose.
         const double scale = rng.uniform(0.1, 10);
-        const Plane<T> plane(Vec4<T>(glm::dvec4(rng.unit_vector() * scale, rng.uniform(-30, 30) * scale)));
+        const double offset = rng.uniform(-30, 30) * scale; // drawn before the normal, as always
+        const glm::dvec3 normal = rng.unit_vector() * scale;
+        const Plane<T> plane(Vec4<T>(glm::dvec4(normal, offset)));
         const auto once = frustum::reflect(pair, plane);
         REQUIRE_MESSAGE(once.ok(), once.error());
         CHECK(once->flips_winding());

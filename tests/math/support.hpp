@@ -495,7 +495,11 @@ Plane<T> random_plane_through(Random& rng, const MatrixPair<T>& pair, bool eye_b
     const DepthRange d = pair.depth();
     const double s = frustum::clip_z_span<double>(d) > 0 ? 1 : -1;
     const glm::dvec4 p0 = random_clip_point(rng, d, 0.1);
-    const glm::dvec3 n(rng.uniform(-1, 1), rng.uniform(-1, 1), (eye_behind ? s : -s) * rng.uniform(0.2, 1));
+    // One draw per statement (argument order is unspecified), z first.
+    const double n_z = (eye_behind ? s : -s) * rng.uniform(0.2, 1);
+    const double n_y = rng.uniform(-1, 1);
+    const double n_x = rng.uniform(-1, 1);
+    const glm::dvec3 n(n_x, n_y, n_z);
     const glm::dvec4 clip_plane(n, -glm::dot(n, glm::dvec3(p0)));
     const glm::dvec4 c = glm::transpose(glm::dmat4(pair.matrix())) * clip_plane;
     return Plane<T>(Vec4<T>(c / glm::length(glm::dvec3(c))));

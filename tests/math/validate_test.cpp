@@ -127,8 +127,16 @@ TEST_CASE_TEMPLATE("validate: KNOWN MISS, literal §5.5 rejects many obliquely c
         const MatrixPair<T> pair = make<T>(c);
         REQUIRE(frustum::validate(pair).valid());
         const double s = frustum::clip_z_span<double>(c.depth) > 0 ? 1 : -1;
-        const glm::dvec3 p0(rng.uniform(-0.8, 0.8), rng.uniform(-0.8, 0.8), clip_z_at<double>(c.depth, rng.uniform(0.05, 0.9)));
-        const glm::dvec3 n(rng.uniform(-1, 1), rng.uniform(-1, 1), s * rng.uniform(0.2, 1));
+        // One draw per statement (argument order is unspecified), z first:
+        // the order these cases were always drawn in.
+        const double p0_z = clip_z_at<double>(c.depth, rng.uniform(0.05, 0.9));
+        const double p0_y = rng.uniform(-0.8, 0.8);
+        const double p0_x = rng.uniform(-0.8, 0.8);
+        const glm::dvec3 p0(p0_x, p0_y, p0_z);
+        const double n_z = s * rng.uniform(0.2, 1);
+        const double n_y = rng.uniform(-1, 1);
+        const double n_x = rng.uniform(-1, 1);
+        const glm::dvec3 n(n_x, n_y, n_z);
         const Plane<T> plane = world_plane(pair, glm::dvec4(n, -glm::dot(n, p0)));
         const auto clipped = frustum::clip_oblique(pair, plane);
         REQUIRE_MESSAGE(clipped.ok(), clipped.error());

@@ -83,7 +83,7 @@ std::string base64(const std::string& bytes) {
 // Triangle with a textured material whose image is `image`.
 std::function<void(Model&)> with_image(Json image) {
     return edit([image](Json& g) {
-        g["images"] = {image};
+        g["images"] = Json::array({image}); // not {image}: clang reads that as a copy of image, GCC as an array
         g["textures"] = {{{"source", 0}}};
         g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
         g["meshes"][0]["primitives"][0]["material"] = 0;

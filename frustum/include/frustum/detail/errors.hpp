@@ -3,6 +3,7 @@
 // Numbers are printed in their own type's shortest round-trip form.
 #pragma once
 
+#include "frustum/detail/shortest_text.hpp"
 #include "frustum/result.hpp"
 #include "frustum/types.hpp"
 
@@ -10,15 +11,25 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 namespace frustum::detail {
 
 template <class T>
 std::string number(T value) {
-    char buffer[64];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
+#if !defined(__cpp_lib_to_chars) || __cpp_lib_to_chars < 201611L
+    // No floating-point std::to_chars (libc++ 13, emscripten): the same text
+    // from snprintf/strtod (shortest_text.hpp).
+    if constexpr (std::is_floating_point_v<T>) {
+        return shortest_text_portable(value);
+    } else
+#endif
+    {
+        char buffer[64];
+        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+        return std::string(buffer, end);
+    }
 }
 
 template <class T>
