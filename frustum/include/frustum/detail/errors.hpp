@@ -7,6 +7,12 @@
 #include "frustum/types.hpp"
 
 #include <charconv>
+#if defined(__EMSCRIPTEN__)
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <type_traits>
+#endif
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -17,8 +23,23 @@ namespace frustum::detail {
 template <class T>
 std::string number(T value) {
     char buffer[64];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
+#if defined(__EMSCRIPTEN__)
+    // Emscripten's libc++ declares but does not implement floating-point
+    // to_chars: the shortest %g precision that reads back to the same value.
+    if constexpr (std::is_floating_point_v<T>) {
+        for (int digits = 1; digits <= std::numeric_limits<T>::max_digits10; ++digits) {
+            std::snprintf(buffer, sizeof buffer, "%.*g", digits, static_cast<double>(value));
+            if (static_cast<T>(std::strtod(buffer, nullptr)) == value) {
+                break;
+            }
+        }
+        return std::string(buffer);
+    } else
+#endif
+    {
+        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+        return std::string(buffer, end);
+    }
 }
 
 template <class T>
