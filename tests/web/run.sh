@@ -39,12 +39,13 @@ fi
 
 "$demo" render --scene "$source_dir/assets/showcase.gltf" --effect all --size "$size" --out "$work/desktop" >/dev/null
 
-# Tolerance: SwiftShader and llvmpipe rasterize and interpolate slightly
-# differently (edge pixels of every silhouette, texel rounding): at 320x180
-# 0.05-0.2% of the pixels differ by more than 16 in a channel and the mean
-# channel difference is < 0.4 (docs/web.md has the measured numbers). A
-# missing or moved object shows up as several percent.
-tolerance=16 max_fraction=0.004 max_mean=0.8
+# Tolerance, measured (docs/web.md): SwiftShader and llvmpipe produce the
+# same colour for 99.7% of the pixels; they disagree on the coverage of some
+# silhouette edge pixels, 31-66 of the 57600 (0.05-0.12%) by more than 16 in
+# a channel (up to 172), mean channel difference 0.04-0.10. Pinned at about
+# twice the worst: at most 0.25% over 16 and a mean of at most 0.25. The
+# mirror frame against the plain one is 4.6% over, mean 1.6.
+tolerance=16 max_fraction=0.0025 max_mean=0.25
 status=0
 # frustum: not compared, see docs/web.md (the reflection camera's edges
 # through infinity are drawn by the desktop but not in the browser).
