@@ -47,8 +47,8 @@ fi
 # mirror frame against the plain one is 4.6% over, mean 1.6.
 tolerance=16 max_fraction=0.0025 max_mean=0.25
 status=0
-# frustum: not compared, see docs/web.md (the reflection camera's edges
-# through infinity are drawn by the desktop but not in the browser).
+# frustum: not compared, see docs/web.md (SwiftShader does not draw the
+# reflection camera's long edges through infinity that llvmpipe draws).
 for effect in plain mirror tiles curved lens nonaffine; do
   browser --screenshot="$work/browser/$effect.png" "file://$page#capture=$size&effect=$effect" >/dev/null
   printf '%-10s ' "$effect"
