@@ -42,6 +42,7 @@ bench: deps
 web: deps $(BUILD)/CMakeCache.txt
 	@bash scripts/install-deps.sh --web
 	JOBS=$(JOBS) bash scripts/build-web.sh build-web
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS) --target frustum-demo web_compare_pngs
 	cd $(BUILD) && ctest --output-on-failure -L web
 
