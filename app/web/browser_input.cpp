@@ -26,7 +26,11 @@ EM_BOOL on_mouse_button(int type, const EmscriptenMouseEvent* e, void* data) {
                                                                               : gl::MouseButton::Right;
     changed.pressed = type == EMSCRIPTEN_EVENT_MOUSEDOWN;
     changed.mods = modifiers(e->shiftKey, e->ctrlKey, e->altKey);
-    listener.sink(gl::CursorMoved{static_cast<double>(e->targetX), static_cast<double>(e->targetY)});
+    if (changed.pressed) {
+        // Where the drag starts (a release is heard on the whole document,
+        // whose coordinates are not the canvas's).
+        listener.sink(gl::CursorMoved{static_cast<double>(e->targetX), static_cast<double>(e->targetY)});
+    }
     listener.sink(changed);
     return EM_TRUE;
 }
