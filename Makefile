@@ -5,7 +5,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan bench fuzz clean
+.PHONY: all deps build demo test test-asan bench fuzz web clean
 
 all: build
 
@@ -28,7 +28,7 @@ demo: deps $(BUILD)/CMakeCache.txt
 	bash scripts/demo.sh $(BUILD)
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE web
 	$(MAKE) --no-print-directory test-asan
 
 # The whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer
@@ -37,7 +37,7 @@ test-asan: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFRUSTUM_SANITIZE=ON $(CMAKE_FLAGS)
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
-	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -LE 'package|repo'
+	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -LE 'package|repo|web'
 
 bench: deps
 	@bash scripts/install-deps.sh --bench
@@ -45,7 +45,16 @@ bench: deps
 	cmake --build build-bench -j $(JOBS)
 	bash scripts/bench.sh build-bench
 
+# The renderer as one WebGL 2 page (build-web/app/web/frustum-web.html, emscripten)
+# and its browser test (CTest label web; slow, so not part of `make test`).
+web: deps $(BUILD)/CMakeCache.txt
+	@bash scripts/install-deps.sh --web
+	JOBS=$(JOBS) bash scripts/build-web.sh build-web
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target frustum-demo web_compare_pngs
+	cd $(BUILD) && ctest --output-on-failure -L web
+
 fuzz:
 	bash scripts/fuzz.sh $(FUZZ_SECONDS)
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) build-bench
+	rm -rf $(BUILD) $(ASAN_BUILD) build-bench build-web

@@ -1,9 +1,7 @@
 #include "gl/context.hpp"
 
 #include "gl/debug_output.hpp"
-#include "gl/egl_surfaceless_context.hpp"
 #include "gl/gl_api.hpp"
-#include "gl/osmesa_context.hpp"
 
 #include <algorithm>
 
@@ -18,7 +16,12 @@ std::string gl_string(PFNGLGETSTRINGPROC get_string, GLenum name) {
 } // namespace
 
 std::string_view to_string(Backend backend) {
-    return backend == Backend::Egl ? "egl" : "osmesa";
+    switch (backend) {
+    case Backend::Egl: return "egl";
+    case Backend::OsMesa: return "osmesa";
+    case Backend::Web: return "webgl";
+    }
+    return "unknown";
 }
 
 frustum::Result<Backend> parse_backend(std::string_view text) {
@@ -96,26 +99,6 @@ frustum::Status Context::initialize(Api api, const char* where) {
         return frustum::Error{std::string(where) + ": options.debug needs a debug_sink"};
     }
     return install_debug_output(*this, options_.debug_sink);
-}
-
-frustum::Result<std::unique_ptr<Context>> create_offscreen_context(Backend backend,
-                                                                  const ContextOptions& options) {
-    return backend == Backend::Egl ? EglSurfacelessContext::create(options)
-                                   : OsMesaContext::create(options);
-}
-
-frustum::Result<std::unique_ptr<Context>> create_offscreen_context_with_fallback(
-    const ContextOptions& options) {
-    auto egl = EglSurfacelessContext::create(options);
-    if (egl) {
-        return egl;
-    }
-    auto osmesa = OsMesaContext::create(options);
-    if (osmesa) {
-        return osmesa;
-    }
-    return frustum::Error{"gl::create_offscreen_context_with_fallback(): no backend works; egl: " +
-                          egl.error() + "; osmesa: " + osmesa.error()};
 }
 
 } // namespace gl

@@ -19,9 +19,11 @@
 
 namespace gl {
 
-enum class Backend { Egl, OsMesa };
+// Web: the browser's WebGL 2 context (gl/web_context.hpp, emscripten
+// builds only); parse_backend() does not offer it.
+enum class Backend { Egl, OsMesa, Web };
 
-// "egl" / "osmesa".
+// "egl" / "osmesa" / "webgl".
 std::string_view to_string(Backend backend);
 // Inverse of to_string(Backend); anything else is an error listing the choices.
 frustum::Result<Backend> parse_backend(std::string_view text);

@@ -19,6 +19,7 @@ for flag in "$@"; do
   case "$flag" in
     --window) packages+=(xvfb x11-apps imagemagick) ;;
     --bench) packages+=(gnuplot-nox libeigen3-dev) ;; # scripts/plot-bench.sh; Eigen: a baseline in bench_ops
+    --web) packages+=(emscripten chromium) ;; # make web: the WebGL 2 page and its headless-browser test
   esac
 done
 

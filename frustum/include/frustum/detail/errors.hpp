@@ -8,6 +8,12 @@
 #include "frustum/types.hpp"
 
 #include <charconv>
+#if defined(__EMSCRIPTEN__)
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <type_traits>
+#endif
 #include <initializer_list>
 #include <string>
 #include <string_view>
