@@ -99,6 +99,10 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         return runtime(cameras.error());
     }
     const EffectSetup setup = setup_effects(*scene, request, reporter); // after the cameras: they frame the model
+    if (setup.sagitta_error) {
+        // The help bounds --sagitta by the mirror: refused whichever effects run.
+        return Failure{ExitStatus::UsageError, *setup.sagitta_error};
+    }
 
     // Destroyed in reverse: renderer, then the table its objects point to, then the context.
     auto context = make_context(request, reporter);
@@ -149,9 +153,7 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     };
     for (render::Effect effect : request.effects) {
         const std::string name(render::to_string(effect));
-        auto picture = effect == render::Effect::Curved && setup.sagitta_error
-                           ? frustum::Result<image::Image>(frustum::Error{*setup.sagitta_error})
-                           : renderer->render(effect, *cameras, options);
+        auto picture = renderer->render(effect, *cameras, options);
         if (!picture) {
             const std::string failure = name + ": " + picture.error();
             if (!several) {

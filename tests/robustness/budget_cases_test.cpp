@@ -176,7 +176,7 @@ TEST_CASE("failed runs leave no new folder; help-valid lens values work; --sagit
                        (dir / "out").string()};
         const rob::Outcome outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
         CHECK(outcome.exit_status == 2);
-        CHECK(outcome.err.find("--sagitta: render::CurvedMirror::create(): sagitta must be in [0, ") !=
+        CHECK(outcome.err.find("frustum-demo: error: --sagitta 1e+30 must be in [0, ") !=
               std::string::npos);
         CHECK_FALSE(fs::exists(dir / "out"));
     }

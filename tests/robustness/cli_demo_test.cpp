@@ -85,8 +85,8 @@ const std::vector<DemoCase>& demo_cases() {
          {"--mirror-plane and --mirror-rect both place the mirror"}, Out::NotCreated},
         {"--pivot beyond the far plane", render({"--effect", "nonaffine", "--pivot", "900", "--size", "64x36"}), 1,
          {"nonaffine: --pivot 900 must be less than the far distance"}, Out::NoFiles},
-        {"--sagitta too large for the mirror", render({"--effect", "curved", "--sagitta", "50", "--size", "64x36"}), 1,
-         {"curved: --sagitta 50 must be in [0, "}, Out::NoFiles},
+        {"--sagitta too large for the mirror", render({"--effect", "curved", "--sagitta", "50", "--size", "64x36"}), 2,
+         {"--sagitta 50 must be in [0, "}, Out::NotCreated},
         {"empty --out", [](const rob::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
          {"--out needs a folder"}, Out::NotCreated},
         {"--scene without a value", [](const rob::TempDir& d) {
