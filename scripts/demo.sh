@@ -41,12 +41,11 @@ fi
 
 # 640x360: the main camera's 16:9, a few seconds on llvmpipe.
 out=$root/out
-"$demo" render --effect all --size 640x360 --out "$out" >/dev/null
-echo "demo images in $out:"
-for name in plain mirror tiles frustum; do
-  echo "  $out/$name.png"
-done
-echo "contact sheet: $out/contact_sheet.png"
+written=$("$demo" render --effect all --size 640x360 --out "$out")
+echo "demo images (every effect, then the contact sheet):"
+while IFS= read -r path; do
+  echo "  $path"
+done <<< "$written"
 
 if [[ $update_docs -eq 1 ]]; then
   docs=$root/docs/images
