@@ -1,24 +1,16 @@
 #include "frustum/rigid.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 
 #include <cmath>
 
 namespace frustum {
 
-namespace {
-
-template <class T>
-bool finite3(const Vec3<T>& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-} // namespace
-
 template <class T>
 Result<RigidTransform<T>> frame_to_world(const Frame<T>& frame, const char* function, const char* what) {
     const std::string name(what);
-    if (!finite3(frame.origin) || !finite3(frame.x) || !finite3(frame.y)) {
+    if (!detail::finite3(frame.origin) || !detail::finite3(frame.x) || !detail::finite3(frame.y)) {
         return detail::error_text(function, name + " frame must be finite",
                                   "origin=" + detail::vector_text(frame.origin) + " x=" + detail::vector_text(frame.x) +
                                       " y=" + detail::vector_text(frame.y));
@@ -43,7 +35,7 @@ Result<RigidTransform<T>> frame_to_world(const Frame<T>& frame, const char* func
 
 template <class T>
 Result<Plane<T>> plane_from_point_normal(const Vec3<T>& point, const Vec3<T>& normal) {
-    if (!finite3(point) || !finite3(normal)) {
+    if (!detail::finite3(point) || !detail::finite3(normal)) {
         return detail::error_text("plane_from_point_normal", "point and normal must be finite",
                                   "point=" + detail::vector_text(point) + " normal=" + detail::vector_text(normal));
     }

@@ -1,25 +1,17 @@
 #include "frustum/screen_projection.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/projection.hpp"
 
 #include <cmath>
 
 namespace frustum {
 
-namespace {
-
-template <class T>
-bool finite3(const Vec3<T>& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-} // namespace
-
 template <class T>
 Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, const Vec3<T>& pc, const Vec3<T>& pe,
                                         T near_m, std::optional<T> far_m, DepthRange depth) {
-    if (!finite3(pa) || !finite3(pb) || !finite3(pc) || !finite3(pe)) {
+    if (!detail::finite3(pa) || !detail::finite3(pb) || !detail::finite3(pc) || !detail::finite3(pe)) {
         return detail::error_text("screen_projection", "corners and eye must be finite",
                                   "lower_left=" + detail::vector_text(pa) + " lower_right=" + detail::vector_text(pb) +
                                       " upper_left=" + detail::vector_text(pc) + " eye=" + detail::vector_text(pe));

@@ -1,6 +1,7 @@
 #include "frustum/volume_approximation.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/reflect.hpp"
 
 #include <cmath>
@@ -61,11 +62,6 @@ Plane<T> through(const Vec3<T>& origin, const Vec3<T>& a, const Vec3<T>& b, cons
     return plane.distance(inside) >= T(0) ? plane : plane.flipped();
 }
 
-template <class T>
-bool finite3(const Vec3<T>& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // The target must be finite, its side normals non-zero, its near plane a
 // plane, and X0..X3 a quadrilateral with no zero-length side.
 template <class T>
@@ -73,7 +69,7 @@ Status check_target(const VolumeTarget<T>& target) {
     for (int i = 0; i < 4; ++i) {
         const Vec3<T>& x = target.near_points[i];
         const Vec3<T>& t = target.side_normals[i];
-        if (!finite3(x) || !finite3(t) || !(glm::length(t) > T(0))) {
+        if (!detail::finite3(x) || !detail::finite3(t) || !(glm::length(t) > T(0))) {
             return detail::error_text("fit_volume", "near points and side normals must be finite, normals non-zero",
                                       "X" + std::to_string(i) + "=" + detail::vector_text(x) + " t" +
                                           std::to_string(i) + "=" + detail::vector_text(t));

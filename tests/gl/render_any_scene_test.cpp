@@ -3,6 +3,7 @@
 // placed when the scene has none, through both backends. Each image has
 // something besides the sky, and the mirror changes the plain frame only
 // inside the mirror's screen rectangle.
+#include "../sample_files.hpp"
 #include "render_test_support.hpp"
 
 #include <render/mirror_geometry.hpp>
@@ -19,23 +20,6 @@ constexpr int kWidthPx = 96;
 constexpr int kHeightPx = 64;
 constexpr int kToleranceLsb = 2;
 constexpr int kMinNotSkyPixels = kWidthPx * kHeightPx / 100; // 1% of the image
-
-std::vector<std::filesystem::path> scene_files() {
-    std::vector<std::filesystem::path> files{std::filesystem::path(FRUSTUM_SOURCE_DIR) / "assets/showcase.gltf"};
-    const std::filesystem::path root(FRUSTUM_SAMPLES_DIR);
-    if (!std::filesystem::is_directory(root)) {
-        MESSAGE("no samples folder " << root.string() << ": the showcase only");
-        return files;
-    }
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-        const auto extension = entry.path().extension();
-        if (entry.is_regular_file() && (extension == ".gltf" || extension == ".glb")) {
-            files.push_back(entry.path());
-        }
-    }
-    std::sort(files.begin() + 1, files.end());
-    return files;
-}
 
 // Pixels more than kToleranceLsb away from the clear colour.
 int not_sky_pixels(const image::Image& picture) {
@@ -76,7 +60,7 @@ MirrorDiff mirror_diff(const image::Image& plain, const image::Image& mirror, co
 TEST_SUITE("gl") {
 
 TEST_CASE("every effect on every sample and the showcase, both backends: non-flat, the mirror only where it is") {
-    const auto files = scene_files();
+    const auto files = test_samples::scene_files();
     for (gl::Backend backend : gl_test::kBackends) {
         auto env = gl_test::make_environment(backend);
         if (!env) {

@@ -6,6 +6,8 @@
 // curved mirror and non-affine effects cannot be drawn.
 #include "process.hpp"
 
+#include "../sample_files.hpp"
+
 #include <doctest/doctest.h>
 
 #include <window/key_help.hpp>
@@ -58,23 +60,6 @@ std::vector<std::string> table_keys() {
     return keys;
 }
 
-std::vector<std::filesystem::path> scene_files() {
-    std::vector<std::filesystem::path> files{std::filesystem::path(FRUSTUM_SOURCE_DIR) / "assets/showcase.gltf"};
-    const std::filesystem::path root(FRUSTUM_SAMPLES_DIR);
-    if (!std::filesystem::is_directory(root)) {
-        MESSAGE("no samples folder " << root.string() << ": the showcase only");
-        return files;
-    }
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-        const auto extension = entry.path().extension();
-        if (entry.is_regular_file() && (extension == ".gltf" || extension == ".glb")) {
-            files.push_back(entry.path());
-        }
-    }
-    std::sort(files.begin() + 1, files.end());
-    return files;
-}
-
 } // namespace
 
 TEST_SUITE("window") {
@@ -104,7 +89,7 @@ TEST_CASE("every key on every sample leaves the window running until Esc") {
         std::vector<std::string> extra;
     };
     std::vector<Run> runs;
-    for (const auto& file : scene_files()) {
+    for (const auto& file : test_samples::scene_files()) {
         runs.push_back({file, {}});
         if (file.filename() == "Cameras.gltf") {
             runs.push_back({file, {"--camera", "1"}}); // orthographic

@@ -1,0 +1,16 @@
+// Finiteness of the library's vector types: the one helper every input
+// check uses (no NaN, no infinity in any component).
+#pragma once
+
+#include "frustum/types.hpp"
+
+#include <cmath>
+
+namespace frustum::detail {
+
+template <class T>
+bool finite3(const Vec3<T>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace frustum::detail
