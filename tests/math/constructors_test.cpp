@@ -1,6 +1,6 @@
 // Constructors (projection.hpp, matrix_pair.hpp): a literal expected matrix
 // per factory and DepthRange, landmarks, fast path == general path, closed
-// form == glm::inverse, and round trips (STYLE.md habit 8).
+// form == glm::inverse, and round trips.
 #include "support.hpp"
 
 #include <glm/ext/matrix_clip_space.hpp>

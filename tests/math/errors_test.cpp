@@ -1,4 +1,4 @@
-// Bad input (STYLE.md habits 5 and 6): every error path returns an Error in
+// Bad input: every error path returns an Error in
 // the one format "frustum::<function>(): <rule>, got <values>". A few
 // representative messages are compared exactly, the others by key words;
 // nothing crashes (this suite also runs under ASan + UBSan with
@@ -56,7 +56,7 @@ TEST_CASE_TEMPLATE("perspective: exact error text", T, float, double) {
 
 TEST_CASE_TEMPLATE("perspective: far <= near is reported by perspective()", T, float, double) {
     // perspective() funnels into off_axis(); the message should still name
-    // the function the caller called (STYLE.md habit 5, whose example is a
+    // the function the caller called (whose example is a
     // perspective() message). KNOWN LIBRARY PROBLEM when the first CHECK
     // fails: the text says "frustum::off_axis(): ...".
     const auto r = frustum::perspective<T>(1, 1, 1, T(1), DepthRange::ZeroToOne);

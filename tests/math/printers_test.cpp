@@ -1,4 +1,4 @@
-// The doctest printers of support.hpp (STYLE.md habit 12): a failing CHECK
+// The doctest printers of support.hpp: a failing CHECK
 // on a Vec4, Mat4, Plane or MatrixPair must show the numbers, rows first,
 // in round-trip precision.
 #include "support.hpp"

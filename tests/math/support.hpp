@@ -1,5 +1,5 @@
 // Shared helpers of the math suite: printers (so a failing CHECK shows
-// numbers, STYLE.md habit 12), tolerance helpers with their reasoning, and
+// numbers), tolerance helpers with their reasoning, and
 // a deterministic generator of random, well-conditioned cameras.
 //
 // Conventions used by every test (see frustum/include/frustum/*.hpp):

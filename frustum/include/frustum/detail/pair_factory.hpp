@@ -1,4 +1,4 @@
-// The one funnel through which every MatrixPair is made (STYLE.md habit 4):
+// The one funnel through which every MatrixPair is made:
 // it stores matrix, inverse and depth range together and applies the sign
 // convention (w > 0 inside): decided once by make() when a frustum is born,
 // kept by keep_sign() through every operation after that. Internal: only constructors and operations of
