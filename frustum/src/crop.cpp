@@ -31,26 +31,52 @@ Result<MatrixPair<T>> uncrop(const MatrixPair<T>& pair, const CropRect<T>& rect)
 
 namespace {
 
-// What one column of tiles shares: row 0 of M' and columns 0 and 3 (its
-// first term) of the inverse; one row of tiles likewise row 1 of M' and the
-// term of column 1. The same expressions as detail::scale_offset_xy, in the
-// same order, so every tile has the bits crop() gives it.
+// What one column of tiles shares: rows 0, 2 and 3 of M' (row 1 left 0)
+// and columns 0 and 3 (its first term) of the inverse; one row of tiles
+// likewise row 1 of M' and the term of column 1. The same expressions as
+// detail::scale_offset_xy, in the same order, so every tile has the bits
+// crop() gives it.
 template <class T>
 struct TileColumn {
-    Vec4<T> row0; // entry j: row 0 of column j of M'
-    Vec4<T> inv0, inv3_partial;
+    detail::Cols<T> m; // columns of M' with row 1 still to fill
+    detail::V4<T> inv0, inv3_partial;
     int x0, width;
 };
 template <class T>
 struct TileRow {
-    Vec4<T> row1;
-    Vec4<T> inv1, inv3_term;
+    detail::V4<T> row1; // entry j: row 1 of column j of M'
+    detail::V4<T> inv1, inv3_term;
     int y0, height;
 };
 
 int tile_edge(int i, int size, int count) {
     return static_cast<int>(static_cast<long long>(i) * size / count);
 }
+
+// Column j of the column's M' with entry 1 replaced by row1[j] (a blend: no
+// arithmetic, so the bits stay).
+template <class T>
+FRUSTUM_HOT_INLINE detail::V4<T> with_row1(const detail::V4<T>& column, const detail::V4<T>& row1, int j) {
+    const detail::V4<T> r = detail::splat(row1[j]);
+    return __builtin_shufflevector(column, r, 0, 4, 2, 3);
+}
+
+template <class T>
+struct TileMaker {
+    int c, r;
+    const TileColumn<T>& tc;
+    const TileRow<T>& tr;
+    const Vec4<T>& inv2;
+    unsigned traits;
+    FRUSTUM_HOT_INLINE operator Tile<T>() const { // NOLINT: implicit by design (emplace_back)
+        using detail::store;
+        return Tile<T>{c, r, tc.x0, tr.y0, tc.width, tr.height,
+                       detail::PairFactory::keep_sign_columns<T>(
+                           store<T>(with_row1<T>(tc.m.c[0], tr.row1, 0)), store<T>(with_row1<T>(tc.m.c[1], tr.row1, 1)),
+                           store<T>(with_row1<T>(tc.m.c[2], tr.row1, 2)), store<T>(with_row1<T>(tc.m.c[3], tr.row1, 3)),
+                           store<T>(tc.inv0), store<T>(tr.inv1), inv2, store<T>(tc.inv3_partial - tr.inv3_term), traits)};
+    }
+};
 
 } // namespace
 
@@ -62,21 +88,27 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
                                 {{"width_px", T(width_px)}, {"height_px", T(height_px)},
                                  {"columns", T(columns)}, {"rows", T(rows)}});
     }
-    const Mat4<T>& m = pair.matrix();
-    const Mat4<T>& inv = pair.inverse();
+    using detail::V4;
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
     // Batched (issue 14): the per-axis crop maps are computed once per
-    // column and once per row of tiles; a tile only assembles its columns.
+    // column and once per row of tiles; a tile only assembles its columns
+    // (four blends and one subtraction) and is written in place.
     std::vector<TileColumn<T>> tile_columns(static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c) {
         const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
         const CropMap<T> map = crop_map(CropRect<T>{T(x0), T(0), T(x1 - x0), T(1), T(width_px), T(1)});
         const T inv_sx = T(1) / map.sx;
+        // scale_offset_xy's column with sy = 1, ty = 0: rows 2 and 3 are
+        // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0, as crop() forms them.
+        const V4<T> scale{map.sx, T(0), T(1), T(1)};
+        const V4<T> offset{map.tx, T(0), T(0), T(0)};
         TileColumn<T>& out = tile_columns[static_cast<std::size_t>(c)];
         for (int j = 0; j < 4; ++j) {
-            out.row0[j] = m[j].x * map.sx + m[j].w * map.tx;
+            out.m.c[j] = m.c[j] * scale + m.c[j][3] * offset;
         }
-        out.inv0 = inv[0] * inv_sx;
-        out.inv3_partial = inv[3] - (map.tx * inv_sx) * inv[0];
+        out.inv0 = inv.c[0] * inv_sx;
+        out.inv3_partial = inv.c[3] - (map.tx * inv_sx) * inv.c[0];
         out.x0 = x0;
         out.width = x1 - x0;
     }
@@ -87,20 +119,14 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
         const T inv_sy = T(1) / map.sy;
         TileRow<T>& out = tile_rows[static_cast<std::size_t>(r)];
         for (int j = 0; j < 4; ++j) {
-            out.row1[j] = m[j].y * map.sy + m[j].w * map.ty;
+            out.row1[j] = m.c[j][1] * map.sy + m.c[j][3] * map.ty;
         }
-        out.inv1 = inv[1] * inv_sy;
-        out.inv3_term = (map.ty * inv_sy) * inv[1];
+        out.inv1 = inv.c[1] * inv_sy;
+        out.inv3_term = (map.ty * inv_sy) * inv.c[1];
         out.y0 = y0;
         out.height = y1 - y0;
     }
-    // Rows 2 and 3 of M' and column 2 of the inverse are every tile's:
-    // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0 as crop() forms them.
-    Vec4<T> row2, row3;
-    for (int j = 0; j < 4; ++j) {
-        row2[j] = m[j].z * T(1) + m[j].w * T(0);
-        row3[j] = m[j].w * T(1) + m[j].w * T(0);
-    }
+    const Vec4<T> inv2 = pair.inverse()[2];
     const unsigned traits = detail::PairFactory::traits(pair);
 
     std::vector<Tile<T>> tiles;
@@ -109,12 +135,10 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
         const TileRow<T>& tr = tile_rows[static_cast<std::size_t>(r)];
         for (int c = 0; c < columns; ++c) {
             const TileColumn<T>& tc = tile_columns[static_cast<std::size_t>(c)];
-            tiles.push_back(Tile<T>{
-                c, r, tc.x0, tr.y0, tc.width, tr.height,
-                detail::PairFactory::keep_sign_columns<T>(
-                    Vec4<T>(tc.row0[0], tr.row1[0], row2[0], row3[0]), Vec4<T>(tc.row0[1], tr.row1[1], row2[1], row3[1]),
-                    Vec4<T>(tc.row0[2], tr.row1[2], row2[2], row3[2]), Vec4<T>(tc.row0[3], tr.row1[3], row2[3], row3[3]),
-                    tc.inv0, tr.inv1, inv[2], tc.inv3_partial - tr.inv3_term, traits)});
+            // emplace_back of a converter: the Tile is the prvalue its
+            // conversion returns, so it is built straight in the vector's
+            // storage (no temporary Tile copied in).
+            tiles.emplace_back(TileMaker<T>{c, r, tc, tr, inv2, traits});
         }
     }
     return tiles;

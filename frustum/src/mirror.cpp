@@ -6,6 +6,7 @@
 #include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
+#include "frustum/screen_projection.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,31 @@ struct MirrorCamera {
     Vec3<T> i, j, k;
 };
 
+// MirrorFit::Exact is screen_projection() (Kooima) with the eye at O' and
+// the near plane in the mirror: k = the mirror's normal on O''s side,
+// up = unit(a1), right = up x k, so the lower-left corner is P1 when a2
+// points right and P1 + a2 when it points left.
+template <class T>
+Result<MatrixPair<T>> exact_fit(const Rectangle<T>& rect, const Vec3<T>& normal, T eye_distance, T a1_length,
+                                const Vec3<T>& reflected_eye, T far_m, DepthRange depth) {
+    const T near_m = std::abs(eye_distance);
+    if (!(far_m > near_m)) {
+        return detail::error<T>("mirror_rectangle", "far must exceed the near distance",
+                                {{"near", near_m}, {"far", far_m}});
+    }
+    const Vec3<T> k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
+    const Vec3<T> right = glm::cross(rect.a1 / a1_length, k);
+    const bool a2_right = glm::dot(rect.a2, right) > T(0);
+    const Vec3<T> lower_left = a2_right ? rect.corner : rect.corner + rect.a2;
+    const Vec3<T> lower_right = a2_right ? rect.corner + rect.a2 : rect.corner;
+    auto pair = screen_projection(lower_left, lower_right, lower_left + rect.a1, reflected_eye, near_m,
+                                  std::optional<T>(far_m), depth);
+    if (!pair) {
+        return Error{"frustum::mirror_rectangle(): " + pair.error()};
+    }
+    return pair;
+}
+
 } // namespace
 
 template <class T>
@@ -132,20 +158,17 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
                                 {{"eye_distance", eye_distance}});
     }
     const Vec3<T> reflected_eye = eye - T(2) * eye_distance * normal;
+    if (fit == MirrorFit::Exact) {
+        return exact_fit(rect, normal, eye_distance, a1_length, reflected_eye, far_m, depth);
+    }
     const Vec3<T> corners[4] = {rect.corner, rect.corner + rect.a1, rect.corner + rect.a1 + rect.a2,
                                 rect.corner + rect.a2}; // eq. 29
 
     MirrorCamera<T> cam;
-    if (fit == MirrorFit::Paper) {
-        const Vec3<T> center = rect.corner + (rect.a1 + rect.a2) / T(2); // eq. 31
-        cam.k = glm::normalize(reflected_eye - center);                  // eq. 32
-        cam.i = glm::normalize(glm::cross(rect.a1, cam.k));              // erratum 13
-        cam.j = glm::cross(cam.k, cam.i);
-    } else {
-        cam.k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
-        cam.j = rect.a1 / a1_length;
-        cam.i = glm::cross(cam.j, cam.k);
-    }
+    const Vec3<T> center = rect.corner + (rect.a1 + rect.a2) / T(2); // eq. 31
+    cam.k = glm::normalize(reflected_eye - center);                  // eq. 32
+    cam.i = glm::normalize(glm::cross(rect.a1, cam.k));              // erratum 13
+    cam.j = glm::cross(cam.k, cam.i);
 
     // Corners in the camera frame: x, y and depth along -k.
     T x[4], y[4], d[4];
@@ -162,7 +185,7 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
     }
     T left = std::numeric_limits<T>::infinity(), right = -left, bottom = left, top = -left;
     for (int c = 0; c < 4; ++c) {
-        // Project onto the near plane (the identity for the exact fit).
+        // Project onto the near plane.
         const T px = x[c] * near_m / d[c];
         const T py = y[c] * near_m / d[c];
         left = std::min(left, px);
