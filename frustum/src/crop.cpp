@@ -15,8 +15,7 @@ Result<MatrixPair<T>> crop(const MatrixPair<T>& pair, const CropRect<T>& rect) {
     if (!detail::crop_rect_is_valid(rect)) {
         return detail::crop_rect_error(rect, "crop");
     }
-    const CropMap<T> c = crop_map(rect);
-    return detail::scale_offset_xy(pair, c.sx, c.tx, c.sy, c.ty);
+    return detail::crop_pair(pair, rect);
 }
 
 template <class T>
@@ -53,12 +52,11 @@ int tile_edge(int i, int size, int count) {
     return static_cast<int>(static_cast<long long>(i) * size / count);
 }
 
-// Column j of the column's M' with entry 1 replaced by row1[j] (a blend: no
+// Column j of the column's M' with entry 1 replaced by row1[j] (no
 // arithmetic, so the bits stay).
 template <class T>
 FRUSTUM_HOT_INLINE detail::V4<T> with_row1(const detail::V4<T>& column, const detail::V4<T>& row1, int j) {
-    const detail::V4<T> r = detail::splat(row1[j]);
-    return __builtin_shufflevector(column, r, 0, 4, 2, 3);
+    return detail::with_lane<1>(column, row1[j]);
 }
 
 template <class T>
@@ -105,7 +103,7 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
         const V4<T> offset{map.tx, T(0), T(0), T(0)};
         TileColumn<T>& out = tile_columns[static_cast<std::size_t>(c)];
         for (int j = 0; j < 4; ++j) {
-            out.m.c[j] = m.c[j] * scale + m.c[j][3] * offset;
+            out.m.c[j] = m.c[j] * scale + detail::lane<3>(m.c[j]) * offset;
         }
         out.inv0 = inv.c[0] * inv_sx;
         out.inv3_partial = inv.c[3] - (map.tx * inv_sx) * inv.c[0];

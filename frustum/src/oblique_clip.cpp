@@ -116,7 +116,7 @@ Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& pl
     // the reference form's bits (and its accuracy table) exactly.
     const detail::V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared));
     const detail::V4<T> c_clip = detail::dots(detail::transpose(inv), p);
-    const detail::V4<T> m_row3{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    const detail::V4<T> m_row3 = detail::transpose(m).c[3];
     return detail::clip_columns(m, inv, p, c_clip, inv, m_row3, T(1), pair.depth(), detail::PairFactory::traits(pair),
                                 [&] { return clip_oblique_reference(pair, plane); });
 }

@@ -39,12 +39,18 @@ FRUSTUM_COLD Error plane_error(const Vec4<T>& abcd, const char* function);
 
 // ---- checks ----
 
+// Three four-wide comparisons, one branch: every comparison is false for
+// NaN; an infinite size fails the <= max lane (and an infinite crop size
+// would fail x + width <= full_width anyway), so this is exactly
+// "finite, sizes > 0, inside the image".
 template <class T>
 FRUSTUM_HOT_INLINE bool crop_rect_is_valid(const CropRect<T>& r) {
-    // Every comparison is false for NaN; infinities fail the size bounds.
-    return std::isfinite(r.full_width) && std::isfinite(r.full_height) && r.full_width > T(0) &&
-           r.full_height > T(0) && r.width > T(0) && r.height > T(0) && r.x >= T(0) && r.y >= T(0) &&
-           r.x + r.width <= r.full_width && r.y + r.height <= r.full_height;
+    const V4<T> zero = splat(T(0));
+    const V4<T> sizes{r.full_width, r.full_height, r.width, r.height};
+    const V4<T> low{T(0), T(0), r.x + r.width, r.y + r.height};
+    const V4<T> high{r.x, r.y, r.full_width, r.full_height};
+    const auto ok = (sizes > zero) & (sizes <= splat(std::numeric_limits<T>::max())) & (low <= high);
+    return all_lanes(ok);
 }
 
 // One test catches NaN and infinity in any coefficient (inf - inf and
@@ -86,10 +92,32 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> scale_offset_xy(const MatrixPair<T>& pa
     const V4<T> scale{sx, sy, T(1), T(1)};
     const V4<T> offset{tx, ty, T(0), T(0)};
     const T inv_sx = T(1) / sx, inv_sy = T(1) / sy;
-    const auto column = [&](int j) { return store<T>(m.c[j] * scale + m.c[j][3] * offset); };
+    const auto column = [&](int j) { return store<T>(m.c[j] * scale + lane<3>(m.c[j]) * offset); };
     return PairFactory::keep_sign_result<T>(column(0), column(1), column(2), column(3), store<T>(inv.c[0] * inv_sx),
                                             store<T>(inv.c[1] * inv_sy), store<T>(inv.c[2]),
                                             store<T>(inv.c[3] - (tx * inv_sx) * inv.c[0] - (ty * inv_sy) * inv.c[1]),
+                                            PairFactory::traits(pair));
+}
+
+// crop(): crop_map and scale_offset_xy with x and y side by side in the
+// lanes of one vector (the same IEEE operations per lane, so the same
+// bits): two vector divisions where the scalar form has four.
+template <class T>
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> crop_pair(const MatrixPair<T>& pair, const CropRect<T>& r) {
+    const Cols<T> m = load(pair.matrix());
+    const Cols<T> inv = load(pair.inverse());
+    const V4<T> one = splat(T(1));
+    const V4<T> inv_size = one / V4<T>{r.width, r.height, T(1), T(1)};
+    const V4<T> scale = V4<T>{r.full_width, r.full_height, T(1), T(1)} * inv_size; // (sx, sy, 1, 1)
+    // (tx, ty, +0, +0): w - 1 - 2 X / bw as crop_map forms it.
+    const V4<T> offset = (scale - one) - (T(2) * V4<T>{r.x, r.y, T(0), T(0)}) * inv_size;
+    const V4<T> inv_scale = one / scale;
+    const V4<T> shift = offset * inv_scale; // (tx / sx, ty / sy, ...)
+    const auto column = [&](int j) { return store<T>(m.c[j] * scale + lane<3>(m.c[j]) * offset); };
+    return PairFactory::keep_sign_result<T>(column(0), column(1), column(2), column(3),
+                                            store<T>(inv.c[0] * lane<0>(inv_scale)),
+                                            store<T>(inv.c[1] * lane<1>(inv_scale)), store<T>(inv.c[2]),
+                                            store<T>(inv.c[3] - lane<0>(shift) * inv.c[0] - lane<1>(shift) * inv.c[1]),
                                             PairFactory::traits(pair));
 }
 
@@ -103,7 +131,7 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
     const Cols<T> m = load(pair.matrix());
     const Cols<T> inv = load(pair.inverse());
     const V4<T> c = load(unit_plane);
-    const V4<T> n{c[0], c[1], c[2], T(0)};
+    const V4<T> n = with_lane<3>(c, T(0));
     const V4<T> m_n = mat_vec(m, n);
     const V4<T> two_c = T(2) * c;
     const V4<T> two_c_inv = T(2) * dots(transpose(inv), c); // 2 (c . inv_j)
@@ -158,13 +186,9 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Co
     // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
     // column j. T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
     // column j - (X_j / X_2) column 2.
-    const V4<T> m_w{m.c[0][3], m.c[1][3], m.c[2][3], m.c[3][3]};
+    const V4<T> m_w = transpose(m).c[3];
     const V4<T> row2 = span_k * p + z_near * m_w;
-    const auto column = [&](int j) {
-        V4<T> out = m.c[j];
-        out[2] = row2[j];
-        return store<T>(out);
-    };
+    const auto column = [&](int j) { return store<T>(with_lane<2>(m.c[j], row2[j])); };
     const V4<T> x = span_k * c_clip + V4<T>{T(0), T(0), T(0), z_near};
     const T inv_x2 = T(1) / x[2];
     const V4<T> x_over_x2 = x * inv_x2;
