@@ -107,10 +107,12 @@ struct MirrorCamera {
     Vec3<T> i, j, k;
 };
 
-// MirrorFit::Exact is screen_projection() (Kooima) with the eye at O' and
-// the near plane in the mirror: k = the mirror's normal on O''s side,
-// up = unit(a1), right = up x k, so the lower-left corner is P1 when a2
-// points right and P1 + a2 when it points left.
+// MirrorFit::Exact is screen_projection() (Kooima) with the eye at O', the
+// near plane in the mirror and the screen the rectangle in the mirror's
+// plane that bounds the corners along right = up x k and up = unit(a1)
+// (k: the mirror's normal on O''s side). For a rectangle that is the
+// rectangle itself; a parallelogram (a1 not perpendicular to a2) gets the
+// rectangle around it.
 template <class T>
 Result<MatrixPair<T>> exact_fit(const Rectangle<T>& rect, const Vec3<T>& normal, T eye_distance, T a1_length,
                                 const Vec3<T>& reflected_eye, T far_m, DepthRange depth) {
@@ -120,11 +122,19 @@ Result<MatrixPair<T>> exact_fit(const Rectangle<T>& rect, const Vec3<T>& normal,
                                 {{"near", near_m}, {"far", far_m}});
     }
     const Vec3<T> k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
-    const Vec3<T> right = glm::cross(rect.a1 / a1_length, k);
-    const bool a2_right = glm::dot(rect.a2, right) > T(0);
-    const Vec3<T> lower_left = a2_right ? rect.corner : rect.corner + rect.a2;
-    const Vec3<T> lower_right = a2_right ? rect.corner + rect.a2 : rect.corner;
-    auto pair = screen_projection(lower_left, lower_right, lower_left + rect.a1, reflected_eye, near_m,
+    const Vec3<T> up = rect.a1 / a1_length;
+    const Vec3<T> right = glm::cross(up, k);
+    // Corners relative to P1 (0, a1, a2, a1 + a2) along right and up.
+    const Vec3<T> diagonal = rect.a1 + rect.a2;
+    const T x1 = glm::dot(rect.a1, right), x2 = glm::dot(rect.a2, right), x3 = glm::dot(diagonal, right);
+    const T y1 = glm::dot(rect.a1, up), y2 = glm::dot(rect.a2, up), y3 = glm::dot(diagonal, up);
+    const T left = std::min(std::min(T(0), x1), std::min(x2, x3));
+    const T right_edge = std::max(std::max(T(0), x1), std::max(x2, x3));
+    const T bottom = std::min(std::min(T(0), y1), std::min(y2, y3));
+    const T top = std::max(std::max(T(0), y1), std::max(y2, y3));
+    const Vec3<T> lower_left = rect.corner + left * right + bottom * up;
+    auto pair = screen_projection(lower_left, rect.corner + right_edge * right + bottom * up,
+                                  rect.corner + left * right + top * up, reflected_eye, near_m,
                                   std::optional<T>(far_m), depth);
     if (!pair) {
         return Error{"frustum::mirror_rectangle(): " + pair.error()};
