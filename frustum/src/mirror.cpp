@@ -6,7 +6,6 @@
 #include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
-#include "frustum/screen_projection.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -107,53 +106,6 @@ struct MirrorCamera {
     Vec3<T> i, j, k;
 };
 
-// MirrorFit::Exact is screen_projection() (Kooima) with the eye at O', the
-// near plane in the mirror and the screen the rectangle in the mirror's
-// plane that bounds the corners along right = up x k and up = unit(a1)
-// (k: the mirror's normal on O''s side). For a rectangle that is the
-// rectangle itself (its corners are passed as they are); a parallelogram
-// (a1 not perpendicular to a2) gets the rectangle around it.
-template <class T>
-Result<MatrixPair<T>> exact_fit(const Rectangle<T>& rect, const Vec3<T>& normal, T eye_distance, T a1_length,
-                                T a2_length, const Vec3<T>& reflected_eye, T far_m, DepthRange depth) {
-    const T near_m = std::abs(eye_distance);
-    if (!(far_m > near_m)) {
-        return detail::error<T>("mirror_rectangle", "far must exceed the near distance",
-                                {{"near", near_m}, {"far", far_m}});
-    }
-    const auto screen = [&](const Vec3<T>& lower_left, const Vec3<T>& lower_right,
-                            const Vec3<T>& upper_left) -> Result<MatrixPair<T>> {
-        auto pair = screen_projection(lower_left, lower_right, upper_left, reflected_eye, near_m,
-                                      std::optional<T>(far_m), depth);
-        if (!pair) {
-            return Error{"frustum::mirror_rectangle(): " + pair.error()};
-        }
-        return pair;
-    };
-    const Vec3<T> k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
-    // |cos(a1, a2)| within screen_projection's tolerance (no division).
-    if (std::abs(glm::dot(rect.a1, rect.a2)) <= perpendicular_tolerance<T>() * (a1_length * a2_length)) {
-        // A rectangle: its corners are the screen ((a1 x k) . a2 has the
-        // sign of right . a2, no division needed to pick the lower left).
-        const bool a2_right = glm::dot(rect.a2, glm::cross(rect.a1, k)) > T(0);
-        const Vec3<T> lower_left = a2_right ? rect.corner : rect.corner + rect.a2;
-        const Vec3<T> lower_right = a2_right ? rect.corner + rect.a2 : rect.corner;
-        return screen(lower_left, lower_right, lower_left + rect.a1);
-    }
-    const Vec3<T> up = rect.a1 / a1_length;
-    const Vec3<T> right = glm::cross(up, k);
-    // Corners relative to P1 (0, a1, a2, a1 + a2) along right and up.
-    const Vec3<T> diagonal = rect.a1 + rect.a2;
-    const T x1 = glm::dot(rect.a1, right), x2 = glm::dot(rect.a2, right), x3 = glm::dot(diagonal, right);
-    const T y1 = glm::dot(rect.a1, up), y2 = glm::dot(rect.a2, up), y3 = glm::dot(diagonal, up);
-    const T left = std::min(std::min(T(0), x1), std::min(x2, x3));
-    const T right_edge = std::max(std::max(T(0), x1), std::max(x2, x3));
-    const T bottom = std::min(std::min(T(0), y1), std::min(y2, y3));
-    const T top = std::max(std::max(T(0), y1), std::max(y2, y3));
-    return screen(rect.corner + left * right + bottom * up, rect.corner + right_edge * right + bottom * up,
-                  rect.corner + left * right + top * up);
-}
-
 } // namespace
 
 template <class T>
@@ -180,17 +132,20 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
                                 {{"eye_distance", eye_distance}});
     }
     const Vec3<T> reflected_eye = eye - T(2) * eye_distance * normal;
-    if (fit == MirrorFit::Exact) {
-        return exact_fit(rect, normal, eye_distance, a1_length, glm::length(rect.a2), reflected_eye, far_m, depth);
-    }
     const Vec3<T> corners[4] = {rect.corner, rect.corner + rect.a1, rect.corner + rect.a1 + rect.a2,
                                 rect.corner + rect.a2}; // eq. 29
 
     MirrorCamera<T> cam;
-    const Vec3<T> center = rect.corner + (rect.a1 + rect.a2) / T(2); // eq. 31
-    cam.k = glm::normalize(reflected_eye - center);                  // eq. 32
-    cam.i = glm::normalize(glm::cross(rect.a1, cam.k));              // erratum 13
-    cam.j = glm::cross(cam.k, cam.i);
+    if (fit == MirrorFit::Paper) {
+        const Vec3<T> center = rect.corner + (rect.a1 + rect.a2) / T(2); // eq. 31
+        cam.k = glm::normalize(reflected_eye - center);                  // eq. 32
+        cam.i = glm::normalize(glm::cross(rect.a1, cam.k));              // erratum 13
+        cam.j = glm::cross(cam.k, cam.i);
+    } else {
+        cam.k = eye_distance > T(0) ? -normal : normal; // towards O', which is on the far side
+        cam.j = rect.a1 / a1_length;
+        cam.i = glm::cross(cam.j, cam.k);
+    }
 
     // Corners in the camera frame: x, y and depth along -k.
     T x[4], y[4], d[4];
@@ -207,7 +162,7 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
     }
     T left = std::numeric_limits<T>::infinity(), right = -left, bottom = left, top = -left;
     for (int c = 0; c < 4; ++c) {
-        // Project onto the near plane.
+        // Project onto the near plane (the identity for the exact fit).
         const T px = x[c] * near_m / d[c];
         const T py = y[c] * near_m / d[c];
         left = std::min(left, px);
