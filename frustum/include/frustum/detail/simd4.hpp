@@ -101,6 +101,15 @@ inline V with_lane(V v, T x) {
     v[I] = x;
     return v;
 }
+template <int I, class T>
+inline Double4 with_lane(Double4 v, T x) {
+    if constexpr (I < 2) {
+        v.lo[I] = x;
+    } else {
+        v.hi[I - 2] = x;
+    }
+    return v;
+}
 
 // True when every lane of a comparison mask is set (lanes are all ones or
 // all zeros): the mask's 64-bit words ANDed, no per-lane extraction.
