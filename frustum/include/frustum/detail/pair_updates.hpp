@@ -131,7 +131,7 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
     const Cols<T> m = load(pair.matrix());
     const Cols<T> inv = load(pair.inverse());
     const V4<T> c = load(unit_plane);
-    const V4<T> n = with_lane<3>(c, T(0));
+    const V4<T> n{c[0], c[1], c[2], T(0)};
     const V4<T> m_n = mat_vec(m, n);
     const V4<T> two_c = T(2) * c;
     const V4<T> two_c_inv = T(2) * dots(transpose(inv), c); // 2 (c . inv_j)
