@@ -79,7 +79,7 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     // normalizes the plane it is given once more: the same bits).
     const T unit_length_squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
     const V4<T> c = p * (T(1) / std::sqrt(unit_length_squared));
-    const V4<T> n = detail::with_lane<3>(c, T(0));
+    const V4<T> n{c[0], c[1], c[2], T(0)};
     const V4<T> m_n = detail::mat_vec(m, n);
     const V4<T> two_c = T(2) * c, two_c_inv = T(2) * detail::dots(detail::transpose(inv), c);
     detail::Cols<T> reflected, reflected_inv;
