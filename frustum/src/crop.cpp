@@ -91,7 +91,7 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
     const detail::Cols<T> inv = detail::load(pair.inverse());
     // Batched (issue 14): the per-axis crop maps are computed once per
     // column and once per row of tiles; a tile only assembles its columns
-    // (four blends and one subtraction) and is written in place.
+    // (four lane inserts and one subtraction) and is written in place.
     std::vector<TileColumn<T>> tile_columns(static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c) {
         const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
