@@ -175,6 +175,10 @@ frustum::Result<gl::Texture> upload_texture(const gl::Functions& fn, const scene
 frustum::Result<GpuScene> GpuScene::upload(const gl::Functions& fn, const scene::Scene& scene) {
     GpuScene gpu;
     for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        if (scene.images[i].rgba.empty()) {
+            gpu.textures_.emplace_back(); // no texture draws it (scene::Scene::images)
+            continue;
+        }
         auto texture = upload_texture(fn, scene.images[i], i);
         if (!texture) {
             return frustum::Error{texture.error()};

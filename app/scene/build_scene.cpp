@@ -222,6 +222,9 @@ Result<Mesh> build_mesh(const tinygltf::Model& model, int index, const std::vect
     Mesh mesh;
     mesh.name = source.name;
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+        if (source.primitives[p].attributes.count("POSITION") == 0) {
+            continue; // nothing to draw (validate_primitive())
+        }
         const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
         Result<Primitive> primitive = build_primitive(model, source.primitives[p], where, uses, weights);
         if (!primitive) {
@@ -503,6 +506,10 @@ Result<Scene> build_scene(tinygltf::Model&& model, const LoadOptions& options) {
     }
     Scene scene;
     for (tinygltf::Image& source : model.images) {
+        if (source.image.empty()) {
+            scene.images.emplace_back(); // not decoded: no texture draws it (parse_model())
+            continue;
+        }
         scene.images.push_back({source.width, source.height, std::move(source.image)});
     }
     std::vector<TexcoordUse> uses;

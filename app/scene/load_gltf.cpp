@@ -46,7 +46,8 @@ std::string first_bytes_hex(const std::vector<unsigned char>& bytes) {
 }
 
 // Container and JSON checks that must pass before tinygltf sees the bytes.
-Status preflight(const std::vector<unsigned char>& bytes, bool is_glb, const Budget& budget) {
+frustum::Result<detail::JsonFacts> preflight(const std::vector<unsigned char>& bytes, bool is_glb,
+                                             const Budget& budget) {
     if (bytes.empty()) {
         return Error{"the file is empty"};
     }
@@ -69,7 +70,7 @@ Status preflight(const std::vector<unsigned char>& bytes, bool is_glb, const Bud
     }
     const char* json = reinterpret_cast<const char*>(bytes.data()) + json_offset;
     if (Status depth = detail::check_json_depth(json, json_bytes); !depth) {
-        return depth;
+        return Error{depth.error()};
     }
     return detail::check_json_and_uris(json, json_bytes, budget);
 }
@@ -92,11 +93,12 @@ frustum::Result<Scene> load_gltf(const std::string& path, const LoadOptions& opt
         return fail(bytes.error());
     }
     const bool is_glb = detail::has_glb_magic(bytes->data(), bytes->size());
-    if (Status checked = preflight(*bytes, is_glb, options.budget); !checked) {
-        return fail(checked.error());
+    frustum::Result<detail::JsonFacts> facts = preflight(*bytes, is_glb, options.budget);
+    if (!facts) {
+        return fail(facts.error());
     }
-    frustum::Result<tinygltf::Model> model =
-        detail::parse_model(*bytes, is_glb, *sandbox, options.max_image_pixels, options.budget);
+    frustum::Result<tinygltf::Model> model = detail::parse_model(
+        *bytes, is_glb, *facts, *sandbox, options.max_image_pixels, options.budget);
     if (!model) {
         return fail(model.error());
     }

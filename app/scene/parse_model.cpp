@@ -2,9 +2,14 @@
 
 #include "foreign_message.hpp"
 #include "budget_check.hpp"
+#include "glb_check.hpp"
 #include "image_decode.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <exception>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -19,7 +24,21 @@ struct ImageLoaderState {
     std::uint64_t decoded_bytes = 0;  // RGBA8 bytes of the images decoded so far
     std::string budget_note;
     std::string error; // the first image error, already worded for the user
+    // Images that could not be decoded (not PNG/JPEG, corrupt, over the
+    // budget), worded for the user: an error only if a texture uses them.
+    std::map<int, std::string> undecoded;
 };
+
+// The images some texture draws from (textures[t].source); an image only an
+// extension names (EXT_texture_webp's source beside a PNG fallback) or no
+// texture names is not drawn, so it need not decode.
+std::set<int> texture_sources(const tinygltf::Model& model) {
+    std::set<int> sources;
+    for (const tinygltf::Texture& texture : model.textures) {
+        sources.insert(texture.source);
+    }
+    return sources;
+}
 
 // tinygltf::LoadImageDataFunction. For an image in a bufferView tinygltf has
 // checked the view and buffer indices but not the byte range, so `bytes` may
@@ -48,9 +67,8 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
     frustum::Result<Image> decoded =
         decode_rgba8(bytes, length, state->max_pixels, left, state->budget_note);
     if (!decoded) {
-        state->error = label + ": " + decoded.error();
-        if (err) *err += state->error;
-        return false;
+        state->undecoded[image_index] = label + ": " + decoded.error();
+        return true; // left empty; parse_model() decides once the textures are read
     }
     image->width = decoded->width;
     image->height = decoded->height;
@@ -62,17 +80,49 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
     return true;
 }
 
+std::string json_without_skins_and_animations(const char* text, std::size_t size_bytes) {
+    const nlohmann::json::parser_callback_t drop =
+        [](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+            return !(depth == 1 && event == nlohmann::json::parse_event_t::key &&
+                     (parsed == "skins" || parsed == "animations"));
+        };
+    return nlohmann::json::parse(text, text + size_bytes, drop).dump(); // valid: checked before
+}
+
+// The file with its JSON replaced by `json` (for a GLB: the JSON chunk,
+// padded with spaces to 4 bytes, the chunks after it unchanged).
+std::vector<unsigned char> with_json(const std::vector<unsigned char>& file_bytes, bool is_glb,
+                                     std::string json) {
+    if (!is_glb) {
+        return {json.begin(), json.end()};
+    }
+    const GlbJson old = *check_glb(file_bytes.data(), file_bytes.size()); // checked before
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    std::vector<unsigned char> bytes(file_bytes.begin(), file_bytes.begin() + 12);
+    auto put_u32 = [&bytes](std::size_t at, std::uint32_t value) {
+        for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<unsigned char>(value >> (8 * i));
+    };
+    bytes.resize(20);
+    put_u32(12, static_cast<std::uint32_t>(json.size()));
+    std::copy(file_bytes.begin() + 16, file_bytes.begin() + 20, bytes.begin() + 16); // "JSON"
+    bytes.insert(bytes.end(), json.begin(), json.end());
+    bytes.insert(bytes.end(), file_bytes.begin() + old.offset + old.size_bytes, file_bytes.end());
+    put_u32(8, static_cast<std::uint32_t>(bytes.size()));
+    return bytes;
+}
+
 } // namespace
 
 frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& file_bytes,
-                                             bool is_glb, FsSandbox& sandbox,
+                                             bool is_glb, const JsonFacts& facts,
+                                             FsSandbox& sandbox,
                                              std::uint64_t max_image_pixels,
                                              const Budget& budget) {
     tinygltf::Model model;
     ImageLoaderState images{&model, max_image_pixels, budget.max_decoded_bytes, 0,
                             " of the budget of " + format_bytes(budget.max_decoded_bytes) +
                                 " (raise it with --max-memory-mb)",
-                            {}};
+                            {}, {}};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(sandbox.callbacks());
     loader.SetImageLoader(&load_image, &images);
@@ -80,12 +130,29 @@ frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& f
     std::string error, warning;
     bool parsed = false;
     try {
-        const auto size = static_cast<unsigned int>(file_bytes.size()); // < 4 GiB: checked by caller
-        parsed = is_glb ? loader.LoadBinaryFromMemory(&model, &error, &warning, file_bytes.data(),
+        std::vector<unsigned char> stripped;
+        if (facts.strip_skins_and_animations) {
+            std::size_t json_offset = 0, json_bytes = file_bytes.size();
+            if (is_glb) {
+                const GlbJson json = *check_glb(file_bytes.data(), file_bytes.size());
+                json_offset = json.offset;
+                json_bytes = json.size_bytes;
+            }
+            stripped = with_json(file_bytes, is_glb, json_without_skins_and_animations(
+                reinterpret_cast<const char*>(file_bytes.data()) + json_offset, json_bytes));
+        }
+        const std::vector<unsigned char>& input = stripped.empty() ? file_bytes : stripped;
+        const auto size = static_cast<unsigned int>(input.size()); // < 4 GiB: checked by caller
+        parsed = is_glb ? loader.LoadBinaryFromMemory(&model, &error, &warning, input.data(),
                                                       size, sandbox.root())
                         : loader.LoadASCIIFromString(
                               &model, &error, &warning,
-                              reinterpret_cast<const char*>(file_bytes.data()), size, sandbox.root());
+                              reinterpret_cast<const char*>(input.data()), size, sandbox.root());
+        if (facts.strip_skins_and_animations) {
+            for (tinygltf::Node& node : model.nodes) {
+                node.skin = -1; // its skin was removed with the others
+            }
+        }
     } catch (const std::exception& exception) {
         return frustum::Error{"tinygltf failed: " + foreign_message(exception.what())};
     }
@@ -100,9 +167,15 @@ frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& f
         }
         return frustum::Error{message};
     }
+    const std::set<int> drawn = texture_sources(model);
+    for (const auto& [index, message] : images.undecoded) {
+        if (drawn.count(index) != 0) {
+            return frustum::Error{message};
+        }
+    }
     // tinygltf only warns when an external image cannot be read.
     for (std::size_t i = 0; i < model.images.size(); ++i) {
-        if (model.images[i].image.empty()) {
+        if (model.images[i].image.empty() && drawn.count(static_cast<int>(i)) != 0) {
             std::string message = "image " + std::to_string(i) + " (uri \"" + model.images[i].uri +
                                   "\") could not be read";
             if (!sandbox.first_refusal().empty()) {

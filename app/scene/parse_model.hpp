@@ -2,6 +2,7 @@
 #pragma once
 
 #include "fs_sandbox.hpp"
+#include "uri_check.hpp"
 
 #include "scene/load_gltf.hpp"
 
@@ -20,9 +21,12 @@ namespace scene::detail {
 // warnings are dropped; its errors (and exceptions) become the error.
 // Images are decoded one at a time while their RGBA8 bytes stay within
 // budget.max_decoded_bytes in total; the first that would exceed it is
-// refused before it is decoded.
+// refused before it is decoded. With facts.strip_skins_and_animations the
+// JSON's skins and animations are removed first (and nodes lose their
+// skin), so tinygltf accepts what glTF 2.0 allows there.
 frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& file_bytes,
-                                             bool is_glb, FsSandbox& sandbox,
+                                             bool is_glb, const JsonFacts& facts,
+                                             FsSandbox& sandbox,
                                              std::uint64_t max_image_pixels,
                                              const Budget& budget = {});
 

@@ -117,7 +117,7 @@ struct Bounds {
 };
 
 struct Scene {
-    std::vector<Image> images;
+    std::vector<Image> images; // empty (0 x 0) where no texture draws the image
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Instance> instances;

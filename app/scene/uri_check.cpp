@@ -90,6 +90,11 @@ public:
             item_ = -1;
         } else if (stack_.size() == 3) {
             uri_key_ = name == "uri";
+            if (root_key_ == "skins" && name == "inverseBindMatrices") {
+                skin_has_matrices_ = true;
+            }
+        } else if (stack_.size() == 6 && in_target_ && name == "node") {
+            target_has_node_ = true;
         }
         return true;
     }
@@ -99,6 +104,9 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    // A skin without inverseBindMatrices or an animation channel target
+    // without node (both valid glTF 2.0) was read: tinygltf 2.7 refuses them.
+    bool tinygltf_refuses_ignored_parts() const { return refused_ignored_part_; }
     // The root's extensionsRequired as read ({} when absent), for check_required_extensions().
     nlohmann::json required_extensions() const {
         nlohmann::json root = nlohmann::json::object();
@@ -117,10 +125,25 @@ private:
         if (!value(kind)) {
             return false;
         }
+        if (kind == Kind::Object && root_key_ == "skins" && stack_.size() == 2) {
+            skin_has_matrices_ = false; // skins[i] starts
+        }
+        if (kind == Kind::Object && root_key_ == "animations" && stack_.size() == 5 &&
+            key_ == "target") {
+            in_target_ = true; // animations[i].channels[j].target starts
+            target_has_node_ = false;
+        }
         stack_.push_back(kind);
         return true;
     }
     bool close() {
+        if (root_key_ == "skins" && stack_.size() == 3 && !skin_has_matrices_) {
+            refused_ignored_part_ = true;
+        }
+        if (in_target_ && stack_.size() == 6) {
+            in_target_ = false;
+            refused_ignored_part_ = refused_ignored_part_ || !target_has_node_;
+        }
         stack_.pop_back();
         if (stack_.size() == 1) {
             list_ = nullptr; // the end of "buffers" or "images"
@@ -189,6 +212,10 @@ private:
     long long item_ = -1;
     bool uri_key_ = false;
     std::string problem_;
+    bool skin_has_matrices_ = false;   // in skins[i]: its inverseBindMatrices was read
+    bool in_target_ = false;           // in animations[i].channels[j].target
+    bool target_has_node_ = false;     // its node was read
+    bool refused_ignored_part_ = false;
     std::optional<bool> required_is_array_; // set when the root has extensionsRequired
     nlohmann::json required_ = nlohmann::json::array();
 };
@@ -233,8 +260,8 @@ std::string uri_problem(const std::string& uri) {
     }
 }
 
-frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
-                                    const Budget& budget) {
+frustum::Result<JsonFacts> check_json_and_uris(const char* text, std::size_t size_bytes,
+                                               const Budget& budget) {
     UriSax events(budget);
     bool parsed = false;
     try {
@@ -245,7 +272,11 @@ frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
     if (!parsed) {
         return frustum::Error{events.problem().empty() ? "invalid JSON" : events.problem()};
     }
-    return check_required_extensions(events.required_extensions());
+    if (frustum::Status supported = check_required_extensions(events.required_extensions());
+        !supported) {
+        return frustum::Error{supported.error()};
+    }
+    return JsonFacts{events.tinygltf_refuses_ignored_parts()};
 }
 
 } // namespace scene::detail

@@ -24,8 +24,18 @@ std::string uri_problem(const std::string& uri);
 // buffers[i].uri and images[i].uri is acceptable, and that the tree tinygltf
 // will build (values * kJsonValueBytes) fits budget.max_decoded_bytes and
 // the "nodes" array budget.max_nodes (tinygltf spends ~1 KB and
-// 20 us per node, so this is refused before it parses).
-frustum::Status check_json_and_uris(const char* text, std::size_t size_bytes,
-                                    const Budget& budget = {});
+// 20 us per node, so this is refused before it parses). Says what
+// parse_model() must work around (JsonFacts).
+struct JsonFacts {
+    // The file has a skin without inverseBindMatrices or an animation channel
+    // target without node: valid glTF 2.0 (identity matrices; a target named
+    // by an extension such as KHR_animation_pointer) that tinygltf 2.7
+    // refuses. Skins and animations are not drawn (load_gltf.hpp), so
+    // parse_model() removes them before tinygltf reads the JSON.
+    bool strip_skins_and_animations = false;
+};
+
+frustum::Result<JsonFacts> check_json_and_uris(const char* text, std::size_t size_bytes,
+                                               const Budget& budget = {});
 
 } // namespace scene::detail

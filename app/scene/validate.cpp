@@ -101,6 +101,9 @@ Status validate_asset(const tinygltf::Model& model) {
 Status validate_images_textures_materials(const tinygltf::Model& model) {
     for (std::size_t i = 0; i < model.images.size(); ++i) {
         const tinygltf::Image& image = model.images[i];
+        if (image.image.empty() && image.width <= 0) {
+            continue; // not decoded because no texture draws it (parse_model())
+        }
         const std::uint64_t expected_bytes =
             std::uint64_t(std::max(image.width, 0)) * std::uint64_t(std::max(image.height, 0)) * 4;
         if (image.width <= 0 || image.height <= 0 || image.component != 4 || image.bits != 8 ||

@@ -139,7 +139,9 @@ Status validate_primitive(const tinygltf::Model& model, const tinygltf::Primitiv
     }
     auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
-        return Error{where + " has no POSITION attribute"};
+        // glTF 2.0 §3.7.2.1: "When positions are not specified, client
+        // implementations SHOULD skip primitive's rendering"; build_mesh() does.
+        return {};
     }
     if (std::string problem = accessor_in_range(model, position->second); !problem.empty()) {
         return Error{"POSITION of " + where + " " + problem};

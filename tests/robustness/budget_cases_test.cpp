@@ -150,7 +150,8 @@ TEST_CASE("budget: images over the budget are refused before they are decoded") 
     rob::TempDir dir;
     // A PNM header claiming 8192x8192 (691 MB on main): not a glTF image format.
     const std::string pnm_uri = "data:image/png;base64,UDYKODE5MiA4MTkyCjI1NQo="; // "P6\n8192 8192\n255\n"
-    const std::string gltf = "{" + asset() + R"(, "images": [{"uri": ")" + pnm_uri + R"("}]})";
+    const std::string gltf = "{" + asset() + R"(, "images": [{"uri": ")" + pnm_uri +
+                             R"("}], "textures": [{"source": 0}]})"; // drawn: an undrawn image is not decoded
     check_refused(demo(dir, gltf, {"--effect", "plain"}), 1, {"image 0: the image is neither PNG nor JPEG"});
 }
 

@@ -210,11 +210,6 @@ const std::vector<BadInput>& bad_inputs() {
          {"tinygltf", "indices accessor out of bounds"}},
         {"indices of type VEC3", edit("Triangle", [](Json& g) { g["meshes"][0]["primitives"][0]["indices"] = 1; }),
          {"indices of mesh 0 primitive 0 (accessor 1) is VEC3", "allowed: SCALAR"}},
-        {"missing POSITION", edit("Box", [](Json& g) {
-             auto& attributes = g["meshes"][0]["primitives"][0]["attributes"];
-             attributes["_POSITION"] = attributes["POSITION"];
-             attributes.erase("POSITION");
-         }), {"mesh 0 primitive 0 has no POSITION attribute"}},
         {"POSITION of UNSIGNED_BYTE", edit("Box", [](Json& g) { g["accessors"][2]["componentType"] = 5121; }),
          {"POSITION of mesh 0 primitive 0 (accessor 2) is VEC3 with componentType 5121 (UNSIGNED_BYTE); allowed: VEC3 FLOAT"}},
         {"NORMAL as VEC2", edit("Box", [](Json& g) { g["accessors"][1]["type"] = "VEC2"; }),
