@@ -8,10 +8,10 @@
 # LAYERS overrides the table (the self-test runs on tests/layers/fixture);
 # "|" separates the items of both.
 cmake_minimum_required(VERSION 3.16) # IN_LIST (policy CMP0057)
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/layers.cmake)
 if(DEFINED LAYERS)
   string(REPLACE "|" ";" LAYERS "${LAYERS}")
 else()
-  include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/layers.cmake)
   set(LAYERS ${FRUSTUM_LAYERS})
 endif()
 if(DEFINED ROOTS)
@@ -25,10 +25,7 @@ set(EXCLUDED "tests/layers/fixture/") # the self-test's deliberate violations
 set(folders "")
 set(all_layers "")
 foreach(row IN LISTS LAYERS)
-  string(REPLACE ":" ";" parts "${row}")
-  list(GET parts 0 folder)
-  list(GET parts 1 names)
-  string(REPLACE " " ";" names "${names}")
+  frustum_layer_row("${row}" folder names)
   list(APPEND folders ${folder})
   string(MAKE_C_IDENTIFIER "${folder}" key)
   set(allowed_${key} ${names})
