@@ -1,8 +1,9 @@
-#include "render/lens_reference.hpp"
+#include "reference/lens_reference.hpp"
 
-#include "render/embedded_shaders.hpp"
-#include "render/program_support.hpp"
-#include "render/scene_pass.hpp"
+#include "reference/embedded_shaders.hpp"
+
+#include <render/program_support.hpp>
+#include <render/scene_pass.hpp>
 
 #include <frustum/crop.hpp>
 #include <frustum/lens.hpp>
