@@ -13,9 +13,9 @@ add_library(frustum_gl STATIC
   ${_gl}/offscreen_target.cpp
   ${_gl}/clip_control.cpp
   ${_gl}/web_context.cpp)    # gl::Context backend: the browser's WebGL 2 canvas
-target_include_directories(frustum_gl PUBLIC ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/frustum/include)
+frustum_include_root(frustum_gl gl ${PROJECT_SOURCE_DIR}/gl) # "gl/..." and nothing else
 target_compile_definitions(frustum_gl PUBLIC GL_GLES_PROTOTYPES=0)
-target_link_libraries(frustum_gl PUBLIC frustum_image)
+target_link_libraries(frustum_gl PUBLIC frustum::frustum frustum_image)
 target_compile_features(frustum_gl PUBLIC cxx_std_17)
 
 add_library(frustum_gl_window STATIC ${_gl}/window_framebuffer.cpp)

@@ -10,7 +10,7 @@
 #include <render/camera.hpp>
 #include <render/curved_mirror.hpp>
 #include <render/curved_pass.hpp>
-#include <render/curved_reference.hpp>
+#include <reference/curved_reference.hpp>
 #include <render/renderer.hpp>
 #include <scene/load_gltf.hpp>
 

@@ -7,9 +7,9 @@
 #include <image/png.hpp>
 #include <render/camera.hpp>
 #include <render/lens_pass.hpp>
-#include <render/lens_reference.hpp>
+#include <reference/lens_reference.hpp>
 #include <render/non_affine_pass.hpp>
-#include <render/non_affine_reference.hpp>
+#include <reference/non_affine_reference.hpp>
 #include <render/renderer.hpp>
 #include <render/scene_pass.hpp>
 #include <scene/load_gltf.hpp>

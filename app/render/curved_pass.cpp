@@ -116,14 +116,14 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const CurvedPlan& 
               const gl::OffscreenTarget& atlas, const glm::ivec2& tile) {
     const gl::Functions& fn = ctx.fn;
     const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
-    fn.UseProgram(p.program.id());
-    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(draw.camera).matrix()));
-    fn.Uniform3f(p.tint, draw.tint.r, draw.tint.g, draw.tint.b);
+    p.use();
+    p.set_view_projection(ctx.depth.to_gpu(draw.camera).matrix());
+    p.set_tint(draw.tint);
     const glm::vec2 atlas_size(static_cast<float>(atlas.width()), static_cast<float>(atlas.height()));
-    fn.Uniform2f(p.half_texel, 0.5f / atlas_size.x, 0.5f / atlas_size.y);
+    p.set_half_texel(glm::vec2(0.5f / atlas_size.x, 0.5f / atlas_size.y));
     fn.ActiveTexture(GL_TEXTURE0);
     fn.BindTexture(GL_TEXTURE_2D, atlas.color_texture().id());
-    fn.Uniform1i(p.atlas, 0);
+    p.set_atlas_texture_unit(0);
     fn.BindVertexArray(mesh.vertex_array.id());
     // The cap is single-sided: from behind it is culled like any surface.
     set_face_state(fn, false, draw.camera.flips_winding(), false);
@@ -132,8 +132,8 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const CurvedPlan& 
         // Without a frustum any matrix will do: the lookup stays inside the
         // tile, which holds only the clear colour.
         const glm::mat4 matrix = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
-        fn.UniformMatrix4fv(p.patch_matrix, 1, GL_FALSE, glm::value_ptr(matrix));
-        fn.Uniform4f(p.tile, patch.i * tile_uv.x, patch.j * tile_uv.y, tile_uv.x, tile_uv.y);
+        p.set_patch_matrix(matrix);
+        p.set_tile(glm::vec4(patch.i * tile_uv.x, patch.j * tile_uv.y, tile_uv.x, tile_uv.y));
         const auto first = static_cast<std::size_t>(patch.j * plan.grid + patch.i) *
                            static_cast<std::size_t>(mesh.indices_per_patch) * sizeof(std::uint32_t);
         fn.DrawElements(GL_TRIANGLES, mesh.indices_per_patch, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first));

@@ -38,11 +38,11 @@ frustum::Status draw_frustum_view(const PassContext& ctx, const frustum::MatrixP
     fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
 
     const LineProgram& p = ctx.programs.line;
-    fn.UseProgram(p.program.id());
-    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(viewer).matrix()));
+    p.use();
+    p.set_view_projection(ctx.depth.to_gpu(viewer).matrix());
     fn.Disable(GL_DEPTH_TEST);
     for (std::size_t i = 0; i < overlays.size(); ++i) {
-        fn.Uniform4fv(p.color, 1, glm::value_ptr(overlays[i].color));
+        p.set_color(overlays[i].color);
         fn.DrawArrays(GL_LINES, ranges[i].first, ranges[i].second);
     }
     fn.Enable(GL_DEPTH_TEST);

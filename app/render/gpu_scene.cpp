@@ -140,7 +140,7 @@ int mip_levels(int width, int height) {
 // Base-colour textures hold sRGB colour (glTF 2.0): GL_SRGB8_ALPHA8 makes
 // the sampler return linear values. Rows go up in file order, so GL's
 // t = 0 is the image's top row, which is where glTF puts uv (0, 0).
-frustum::Result<gl::Texture> upload_texture(const gl::Functions& fn, const scene::Image& image, std::size_t index) {
+frustum::Result<gl::Texture> upload_texture(const gl::Functions& fn, const image::Image& image, std::size_t index) {
     GLint max_size = 0;
     fn.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
     if (image.width > max_size || image.height > max_size) {

@@ -37,15 +37,15 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
     const gl::Functions& fn = ctx.fn;
     const MirrorCompositeProgram& p = ctx.programs.mirror_composite;
     const scene::Instance& instance = ctx.scene.instances()[static_cast<std::size_t>(mirror_instance)];
-    fn.UseProgram(p.program.id());
-    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(camera).matrix()));
-    fn.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(instance.world));
+    p.use();
+    p.set_view_projection(ctx.depth.to_gpu(camera).matrix());
+    p.set_model(instance.world);
     // Rows 0, 1 and 3 (x, y, w) do not depend on the depth range: no conversion.
-    fn.UniformMatrix4fv(p.reflection_matrix, 1, GL_FALSE, glm::value_ptr(view.pair.matrix()));
-    fn.Uniform3f(p.tint, tint.r, tint.g, tint.b);
+    p.set_reflection_matrix(view.pair.matrix());
+    p.set_tint(tint);
     fn.ActiveTexture(GL_TEXTURE0);
     fn.BindTexture(GL_TEXTURE_2D, reflection.id());
-    fn.Uniform1i(p.reflection, 0);
+    p.set_reflection_texture_unit(0);
     const bool model_flips = glm::determinant(glm::mat3(instance.world)) < 0.0f;
     for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instance.mesh)]) {
         set_face_state(fn, ctx.scene.material(primitive.material).double_sided, camera.flips_winding(), model_flips);

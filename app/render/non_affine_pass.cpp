@@ -41,20 +41,10 @@ struct Range {
 void set_material(const PassContext& ctx, const NonAffineProgram& p, const WorldPrimitive& primitive) {
     const gl::Functions& fn = ctx.fn;
     const GpuMaterial& material = ctx.scene.material(primitive.material);
-    fn.Uniform4fv(p.base_color, 1, glm::value_ptr(material.base_color_factor));
-    const bool textured = material.texture >= 0 &&
-                          static_cast<std::size_t>(material.texture) < ctx.scene.textures().size();
-    fn.Uniform1i(p.has_texture, textured ? 1 : 0);
-    fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
-    fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
-    fn.Uniform1i(p.blend, material.alpha_mode == scene::AlphaMode::Blend ? 1 : 0);
-    if (p.alpha_cutoff >= 0) {
-        fn.Uniform1f(p.alpha_cutoff, material.alpha_cutoff);
-    }
-    const Shading shading = material.unlit           ? Shading::Unlit
-                            : primitive.has_normals ? Shading::VertexNormals
-                                                    : Shading::FlatNormals;
-    fn.Uniform1i(p.shading, static_cast<GLint>(shading));
+    p.set_material(material, ctx.scene.textures());
+    p.set_shading(material.unlit           ? Shading::Unlit
+                  : primitive.has_normals ? Shading::VertexNormals
+                                          : Shading::FlatNormals);
     set_face_state(fn, material.double_sided, false, false);
 }
 
@@ -65,16 +55,12 @@ void set_frame_uniforms(const PassContext& ctx, const NonAffineProgram& p,
     for (int i = 0; i < 6; ++i) {
         planes[i] = frustum.plane(i).abcd;
     }
-    fn.Uniform4fv(p.planes, 6, glm::value_ptr(planes[0]));
-    fn.Uniform1f(p.z_near, frustum::clip_z_near<float>(ctx.depth.gpu_range()));
-    fn.Uniform1f(p.z_far, frustum::clip_z_far<float>(ctx.depth.gpu_range()));
-    fn.Uniform1f(p.flat_normal_sign, 1.0f);
-    const glm::vec3 to_light = glm::normalize(ctx.lighting.to_light);
-    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
-    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
-    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
+    p.set_planes(planes);
+    p.set_clip_z(frustum::clip_z_near<float>(ctx.depth.gpu_range()), frustum::clip_z_far<float>(ctx.depth.gpu_range()));
+    p.set_flat_normal_sign(1.0f);
+    p.set_light(ctx.lighting.to_light, ctx.lighting.ambient, ctx.lighting.diffuse);
     fn.ActiveTexture(GL_TEXTURE0);
-    fn.Uniform1i(p.base_color_texture, 0);
+    p.set_base_color_texture_unit(0);
 }
 
 void set_vertex_layout(const gl::Functions& fn) {
@@ -205,7 +191,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
     for (const Range& range : ranges) {
         const NonAffineProgram& p = ctx.programs.non_affine_program(range.group == AlphaGroup::Mask);
         if (&p != current) {
-            fn.UseProgram(p.program.id());
+            p.use();
             set_frame_uniforms(ctx, p, frustum);
             current = &p;
         }

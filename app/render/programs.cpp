@@ -1,113 +1,170 @@
 #include "render/programs.hpp"
 
 #include "render/embedded_shaders.hpp"
-#include "render/program_support.hpp"
 
 #include <string>
-#include <string_view>
 #include <utility>
 
 namespace render {
 namespace {
 
-using detail::link;
-using detail::UniformFinder;
-
-frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_plane, bool alpha_mask) {
-    const char* names[2][2] = {{"scene", "masked scene"}, {"clipped scene", "clipped masked scene"}};
-    const char* name = names[clip_plane ? 1 : 0][alpha_mask ? 1 : 0];
-    const std::string defines = std::string(clip_plane ? "#define CLIP_PLANE 1\n" : "") +
-                                (alpha_mask ? "#define ALPHA_MASK 1\n" : "");
-    const std::string fragment = detail::insert_after_version(shaders::scene_frag, defines);
-    auto program = link(fn, shaders::scene_vert, fragment, name);
-    if (!program) {
-        return frustum::Error{program.error()};
-    }
-    SceneProgram p;
-    p.program = std::move(*program);
-    UniformFinder u(fn, p.program, name);
-    u.find(p.view_projection, "u_view_projection");
-    u.find(p.model, "u_model");
-    u.find(p.normal_matrix, "u_normal_matrix");
-    u.find(p.point_size_px, "u_point_size_px");
-    u.find(p.base_color, "u_base_color");
-    u.find(p.has_texture, "u_has_texture");
-    u.find(p.base_color_texture, "u_base_color_texture");
-    u.find(p.shading, "u_shading");
-    u.find(p.double_sided, "u_double_sided");
-    u.find(p.flat_normal_sign, "u_flat_normal_sign");
-    u.find(p.to_light, "u_to_light");
-    u.find(p.ambient, "u_ambient");
-    u.find(p.diffuse, "u_diffuse");
-    u.find(p.blend, "u_blend");
-    if (clip_plane) {
-        u.find(p.clip_plane, "u_clip_plane");
-    }
-    if (alpha_mask) {
-        u.find(p.alpha_cutoff, "u_alpha_cutoff");
-    }
-    if (auto status = u.status(); !status) {
+// Links `program` from `source` with its uniform table, or the error.
+template <class P, class Link>
+frustum::Result<P> built(P program, Link&& link) {
+    if (auto status = link(program); !status) {
         return frustum::Error{status.error()};
     }
-    return p;
+    return program;
 }
 
-frustum::Result<MirrorCompositeProgram> build_mirror_composite(const gl::Functions& fn) {
-    auto program = link(fn, shaders::mirror_composite_vert, shaders::mirror_composite_frag, "mirror composite");
-    if (!program) {
-        return frustum::Error{program.error()};
-    }
-    MirrorCompositeProgram p;
-    p.program = std::move(*program);
-    UniformFinder u(fn, p.program, "mirror composite");
-    u.find(p.view_projection, "u_view_projection");
-    u.find(p.model, "u_model");
-    u.find(p.reflection_matrix, "u_reflection_matrix");
-    u.find(p.reflection, "u_reflection");
-    u.find(p.tint, "u_tint");
-    if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
-    }
-    return p;
-}
-
-frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
-    auto program = link(fn, shaders::line_vert, shaders::line_frag, "line");
-    if (!program) {
-        return frustum::Error{program.error()};
-    }
-    LineProgram p;
-    p.program = std::move(*program);
-    UniformFinder u(fn, p.program, "line");
-    u.find(p.view_projection, "u_view_projection");
-    u.find(p.color, "u_color");
-    if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
-    }
-    return p;
-}
-
-frustum::Result<CurvedMirrorProgram> build_curved_mirror(const gl::Functions& fn) {
-    auto program = link(fn, shaders::curved_mirror_vert, shaders::curved_mirror_frag, "curved mirror");
-    if (!program) {
-        return frustum::Error{program.error()};
-    }
-    CurvedMirrorProgram p;
-    p.program = std::move(*program);
-    UniformFinder u(fn, p.program, "curved mirror");
-    u.find(p.view_projection, "u_view_projection");
-    u.find(p.patch_matrix, "u_patch_matrix");
-    u.find(p.atlas, "u_atlas");
-    u.find(p.tile, "u_tile");
-    u.find(p.half_texel, "u_half_texel");
-    u.find(p.tint, "u_tint");
-    if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
-    }
-    return p;
+std::string with_defines(std::string_view source, bool clip_plane, bool alpha_mask) {
+    return detail::insert_after_version(source, std::string(clip_plane ? "#define CLIP_PLANE 1\n" : "") +
+                                                    (alpha_mask ? "#define ALPHA_MASK 1\n" : ""));
 }
 
 } // namespace
+
+// LitProgram: shaders/scene.frag.
+
+frustum::Status LitProgram::link_lit(const gl::Functions& fn, const Source& source, std::vector<Uniform> uniforms,
+                                     bool alpha_mask) {
+    uniforms.insert(uniforms.end(), {{"u_base_color", &base_color_},
+                                     {"u_has_texture", &has_texture_},
+                                     {"u_base_color_texture", &base_color_texture_},
+                                     {"u_shading", &shading_},
+                                     {"u_double_sided", &double_sided_},
+                                     {"u_flat_normal_sign", &flat_normal_sign_},
+                                     {"u_to_light", &to_light_},
+                                     {"u_ambient", &ambient_},
+                                     {"u_diffuse", &diffuse_},
+                                     {"u_blend", &blend_}});
+    if (alpha_mask) {
+        uniforms.push_back({"u_alpha_cutoff", &alpha_cutoff_});
+    }
+    return link(fn, source, uniforms);
+}
+
+void LitProgram::set_material(const GpuMaterial& material, const std::vector<gl::Texture>& textures) const {
+    set(base_color_, material.base_color_factor);
+    const bool textured = material.texture >= 0 && static_cast<std::size_t>(material.texture) < textures.size();
+    set(has_texture_, textured ? 1 : 0);
+    // set_base_color_texture_unit() chose the unit; the pass made it active.
+    fn().BindTexture(GL_TEXTURE_2D, textured ? textures[static_cast<std::size_t>(material.texture)].id() : 0);
+    set(double_sided_, material.double_sided ? 1 : 0);
+    set(blend_, material.alpha_mode == scene::AlphaMode::Blend ? 1 : 0);
+    if (alpha_cutoff_ >= 0) {
+        set(alpha_cutoff_, material.alpha_cutoff);
+    }
+}
+
+void LitProgram::set_shading(Shading shading) const { set(shading_, static_cast<GLint>(shading)); }
+
+void LitProgram::set_light(const glm::vec3& to_light, float ambient, float diffuse) const {
+    set(to_light_, glm::normalize(to_light));
+    set(ambient_, ambient);
+    set(diffuse_, diffuse);
+}
+
+void LitProgram::set_flat_normal_sign(float sign) const { set(flat_normal_sign_, sign); }
+void LitProgram::set_base_color_texture_unit(int unit) const { set(base_color_texture_, unit); }
+
+// SceneProgram: shaders/scene.vert + scene.frag.
+
+frustum::Result<SceneProgram> SceneProgram::build(const gl::Functions& fn, bool clip_plane, bool alpha_mask) {
+    const char* names[2][2] = {{"scene", "masked scene"}, {"clipped scene", "clipped masked scene"}};
+    return built(SceneProgram{}, [&](SceneProgram& p) {
+        std::vector<Uniform> uniforms = {{"u_view_projection", &p.view_projection_},
+                                         {"u_model", &p.model_},
+                                         {"u_normal_matrix", &p.normal_matrix_},
+                                         {"u_point_size_px", &p.point_size_px_}};
+        if (clip_plane) {
+            uniforms.push_back({"u_clip_plane", &p.clip_plane_});
+        }
+        const Source source{names[clip_plane ? 1 : 0][alpha_mask ? 1 : 0], std::string(shaders::scene_vert),
+                            with_defines(shaders::scene_frag, clip_plane, alpha_mask)};
+        return p.link_lit(fn, source, std::move(uniforms), alpha_mask);
+    });
+}
+
+void SceneProgram::set_view_projection(const glm::mat4& matrix) const { set(view_projection_, matrix); }
+void SceneProgram::set_model(const glm::mat4& matrix) const { set(model_, matrix); }
+void SceneProgram::set_normal_matrix(const glm::mat3& matrix) const { set(normal_matrix_, matrix); }
+void SceneProgram::set_point_size_px(float size_px) const { set(point_size_px_, size_px); }
+void SceneProgram::set_clip_plane(const glm::vec4& abcd) const { set(clip_plane_, abcd); }
+
+// NonAffineProgram: shaders/non_affine.vert with frustum.glsl + scene.frag.
+
+frustum::Result<NonAffineProgram> NonAffineProgram::build(const gl::Functions& fn, bool alpha_mask) {
+    return built(NonAffineProgram{}, [&](NonAffineProgram& p) {
+        const Source source{alpha_mask ? "masked non-affine" : "non-affine",
+                            detail::insert_after_version(shaders::non_affine_vert, shaders::frustum_glsl),
+                            with_defines(shaders::scene_frag, false, alpha_mask)};
+        return p.link_lit(fn, source, {{"u_planes", &p.planes_}, {"u_z_near", &p.z_near_}, {"u_z_far", &p.z_far_}},
+                          alpha_mask);
+    });
+}
+
+void NonAffineProgram::set_planes(const glm::vec4 (&abcd)[6]) const { set(planes_, abcd, 6); }
+void NonAffineProgram::set_clip_z(float z_near, float z_far) const {
+    set(z_near_, z_near);
+    set(z_far_, z_far);
+}
+
+// MirrorCompositeProgram: shaders/mirror_composite.*.
+
+frustum::Result<MirrorCompositeProgram> MirrorCompositeProgram::build(const gl::Functions& fn) {
+    return built(MirrorCompositeProgram{}, [&](MirrorCompositeProgram& p) {
+        return p.link(fn, {"mirror composite", std::string(shaders::mirror_composite_vert),
+                           std::string(shaders::mirror_composite_frag)},
+                      {{"u_view_projection", &p.view_projection_},
+                       {"u_model", &p.model_},
+                       {"u_reflection_matrix", &p.reflection_matrix_},
+                       {"u_reflection", &p.reflection_},
+                       {"u_tint", &p.tint_}});
+    });
+}
+
+void MirrorCompositeProgram::set_view_projection(const glm::mat4& matrix) const { set(view_projection_, matrix); }
+void MirrorCompositeProgram::set_model(const glm::mat4& matrix) const { set(model_, matrix); }
+void MirrorCompositeProgram::set_reflection_matrix(const glm::mat4& matrix) const { set(reflection_matrix_, matrix); }
+void MirrorCompositeProgram::set_reflection_texture_unit(int unit) const { set(reflection_, unit); }
+void MirrorCompositeProgram::set_tint(const glm::vec3& rgb) const { set(tint_, rgb); }
+
+// CurvedMirrorProgram: shaders/curved_mirror.*.
+
+frustum::Result<CurvedMirrorProgram> CurvedMirrorProgram::build(const gl::Functions& fn) {
+    return built(CurvedMirrorProgram{}, [&](CurvedMirrorProgram& p) {
+        return p.link(fn, {"curved mirror", std::string(shaders::curved_mirror_vert),
+                           std::string(shaders::curved_mirror_frag)},
+                      {{"u_view_projection", &p.view_projection_},
+                       {"u_patch_matrix", &p.patch_matrix_},
+                       {"u_atlas", &p.atlas_},
+                       {"u_tile", &p.tile_},
+                       {"u_half_texel", &p.half_texel_},
+                       {"u_tint", &p.tint_}});
+    });
+}
+
+void CurvedMirrorProgram::set_view_projection(const glm::mat4& matrix) const { set(view_projection_, matrix); }
+void CurvedMirrorProgram::set_patch_matrix(const glm::mat4& matrix) const { set(patch_matrix_, matrix); }
+void CurvedMirrorProgram::set_atlas_texture_unit(int unit) const { set(atlas_, unit); }
+void CurvedMirrorProgram::set_tile(const glm::vec4& uv_rect) const { set(tile_, uv_rect); }
+void CurvedMirrorProgram::set_half_texel(const glm::vec2& uv) const { set(half_texel_, uv); }
+void CurvedMirrorProgram::set_tint(const glm::vec3& rgb) const { set(tint_, rgb); }
+
+// LineProgram: shaders/line.*.
+
+frustum::Result<LineProgram> LineProgram::build(const gl::Functions& fn) {
+    return built(LineProgram{}, [&](LineProgram& p) {
+        return p.link(fn, {"line", std::string(shaders::line_vert), std::string(shaders::line_frag)},
+                      {{"u_view_projection", &p.view_projection_}, {"u_color", &p.color_}});
+    });
+}
+
+void LineProgram::set_view_projection(const glm::mat4& matrix) const { set(view_projection_, matrix); }
+void LineProgram::set_color(const glm::vec4& rgba) const { set(color_, rgba); }
+
+// Programs.
 
 const SceneProgram& Programs::scene_program(bool clip_plane, bool alpha_mask) const {
     return scene[clip_plane ? 1 : 0][alpha_mask ? 1 : 0];
@@ -119,42 +176,34 @@ const NonAffineProgram& Programs::non_affine_program(bool alpha_mask) const {
 
 frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
     Programs programs;
+    frustum::Status status;
+    // Each row builds one program into its slot; after the first error
+    // nothing more is built.
+    const auto step = [&status](auto& slot, const auto& build) {
+        if (!status) {
+            return;
+        }
+        auto program = build();
+        if (!program) {
+            status = frustum::Error{program.error()};
+            return;
+        }
+        slot = std::move(*program);
+    };
     for (const bool clip : {false, true}) {
         for (const bool mask : {false, true}) {
-            auto scene = build_scene(fn, clip, mask);
-            if (!scene) {
-                return frustum::Error{scene.error()};
-            }
-            programs.scene[clip ? 1 : 0][mask ? 1 : 0] = std::move(*scene);
+            step(programs.scene[clip ? 1 : 0][mask ? 1 : 0], [&] { return SceneProgram::build(fn, clip, mask); });
         }
     }
     for (const bool mask : {false, true}) {
-        auto non_affine = build_non_affine_program(fn, mask);
-        if (!non_affine) {
-            return frustum::Error{non_affine.error()};
-        }
-        programs.non_affine[mask ? 1 : 0] = std::move(*non_affine);
+        step(programs.non_affine[mask ? 1 : 0], [&] { return NonAffineProgram::build(fn, mask); });
     }
-    auto mirror_composite = build_mirror_composite(fn);
-    if (!mirror_composite) {
-        return frustum::Error{mirror_composite.error()};
+    step(programs.mirror_composite, [&] { return MirrorCompositeProgram::build(fn); });
+    step(programs.line, [&] { return LineProgram::build(fn); });
+    step(programs.curved_mirror, [&] { return CurvedMirrorProgram::build(fn); });
+    if (!status) {
+        return frustum::Error{status.error()};
     }
-    programs.mirror_composite = std::move(*mirror_composite);
-    auto line = build_line(fn);
-    if (!line) {
-        return frustum::Error{line.error()};
-    }
-    programs.line = std::move(*line);
-    auto curved_mirror = build_curved_mirror(fn);
-    if (!curved_mirror) {
-        return frustum::Error{curved_mirror.error()};
-    }
-    programs.curved_mirror = std::move(*curved_mirror);
-    auto lens_remap = build_lens_remap_program(fn);
-    if (!lens_remap) {
-        return frustum::Error{lens_remap.error()};
-    }
-    programs.lens_remap = std::move(*lens_remap);
     return programs;
 }
 

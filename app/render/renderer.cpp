@@ -135,7 +135,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
             return frustum::Error{lens.error()};
         }
         // The disc is hidden: the lens effect is the magnifier itself, and the
-        // lens reference (lens_reference.hpp) remaps a frame without it.
+        // lens reference (reference/lens_reference.hpp) remaps a frame without it.
         const int disc = lens_ ? lens_->instance : -1;
         return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
     }

@@ -36,36 +36,18 @@ Shading shading_for(const GpuPrimitive& primitive, const GpuMaterial& material) 
     return triangles ? Shading::FlatNormals : Shading::Unlit;
 }
 
-void set_material(const PassContext& ctx, const SceneProgram& p, const GpuMaterial& material) {
-    const gl::Functions& fn = ctx.fn;
-    fn.Uniform4fv(p.base_color, 1, glm::value_ptr(material.base_color_factor));
-    const bool textured = material.texture >= 0 &&
-                          static_cast<std::size_t>(material.texture) < ctx.scene.textures().size();
-    fn.Uniform1i(p.has_texture, textured ? 1 : 0);
-    fn.BindTexture(GL_TEXTURE_2D, textured ? ctx.scene.textures()[static_cast<std::size_t>(material.texture)].id() : 0);
-    fn.Uniform1i(p.double_sided, material.double_sided ? 1 : 0);
-    fn.Uniform1i(p.blend, material.alpha_mode == scene::AlphaMode::Blend ? 1 : 0);
-    if (p.alpha_cutoff >= 0) {
-        fn.Uniform1f(p.alpha_cutoff, material.alpha_cutoff);
-    }
-}
-
 // The frame uniforms of one scene program variant.
 void use_program(const PassContext& ctx, const SceneProgram& p, const SceneDraw& draw) {
-    const gl::Functions& fn = ctx.fn;
-    fn.UseProgram(p.program.id());
-    fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(draw.camera).matrix()));
-    fn.Uniform1f(p.point_size_px, kPointSizePx);
+    p.use();
+    p.set_view_projection(ctx.depth.to_gpu(draw.camera).matrix());
+    p.set_point_size_px(kPointSizePx);
     // A mirrored view turns cross(dFdx, dFdy) away from the viewer.
-    fn.Uniform1f(p.flat_normal_sign, draw.camera.flips_winding() ? -1.0f : 1.0f);
-    const glm::vec3 to_light = glm::normalize(glm::mat3(draw.pre_model) * ctx.lighting.to_light);
-    fn.Uniform3f(p.to_light, to_light.x, to_light.y, to_light.z);
-    fn.Uniform1f(p.ambient, ctx.lighting.ambient);
-    fn.Uniform1f(p.diffuse, ctx.lighting.diffuse);
+    p.set_flat_normal_sign(draw.camera.flips_winding() ? -1.0f : 1.0f);
+    p.set_light(glm::mat3(draw.pre_model) * ctx.lighting.to_light, ctx.lighting.ambient, ctx.lighting.diffuse);
     if (draw.clip_plane) {
-        fn.Uniform4fv(p.clip_plane, 1, glm::value_ptr(draw.clip_plane->abcd));
+        p.set_clip_plane(draw.clip_plane->abcd);
     }
-    fn.Uniform1i(p.base_color_texture, 0);
+    p.set_base_color_texture_unit(0);
 }
 
 // One primitive of one instance, and where it goes in the draw order.
@@ -145,11 +127,11 @@ void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
         }
         const glm::mat4 model = model_of(item.instance);
         const bool model_flips = glm::determinant(glm::mat3(model)) < 0.0f;
-        fn.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model));
-        fn.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix(model)));
+        p.set_model(model);
+        p.set_normal_matrix(normal_matrix(model));
         const GpuMaterial& material = ctx.scene.material(item.primitive->material);
-        set_material(ctx, p, material);
-        fn.Uniform1i(p.shading, static_cast<GLint>(shading_for(*item.primitive, material)));
+        p.set_material(material, ctx.scene.textures());
+        p.set_shading(shading_for(*item.primitive, material));
         set_face_state(fn, material.double_sided, view_flips, model_flips);
         draw_primitive(fn, *item.primitive);
     }

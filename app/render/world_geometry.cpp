@@ -66,14 +66,6 @@ WorldVertex blend(const WorldVertex& a, const WorldVertex& b, const WorldVertex&
 
 } // namespace
 
-int WorldGeometry::triangle_count() const {
-    std::size_t count = 0;
-    for (const WorldPrimitive& p : primitives) {
-        count += p.indices.size() / 3;
-    }
-    return static_cast<int>(count);
-}
-
 WorldGeometry WorldGeometry::in_object_space(const scene::Scene& scene) {
     WorldGeometry out;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {

@@ -36,8 +36,6 @@ struct WorldPrimitive {
 struct WorldGeometry {
     std::vector<WorldPrimitive> primitives;
 
-    int triangle_count() const;
-
     // Every triangle primitive (lists, strips and fans) of every instance,
     // placed by the instances' world transforms.
     static WorldGeometry from_scene(const scene::Scene& scene);

@@ -1,6 +1,6 @@
 #include "image_decode.hpp"
 
-#include <stb_image.h>
+#include <stb/stb_image.h>
 
 #include <climits>
 #include <cstdio>
@@ -21,7 +21,7 @@ bool is_png_or_jpeg(const std::uint8_t* bytes, std::size_t size_bytes) {
 
 } // namespace
 
-frustum::Result<Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_bytes,
+frustum::Result<image::Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_bytes,
                                     std::uint64_t max_pixels, std::uint64_t max_rgba_bytes,
                                     const std::string& budget_note) {
     using frustum::Error;
@@ -60,7 +60,7 @@ frustum::Result<Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_
     if (!pixels_rgba) {
         return Error{std::string("cannot decode the image: ") + stbi_failure_reason()};
     }
-    Image image;
+    image::Image image;
     image.width = width;
     image.height = height;
     image.rgba.assign(pixels_rgba.get(),

@@ -18,7 +18,7 @@ namespace scene::detail {
 // them; `budget_note` ends that message ("... of the budget of 1 GiB (raise
 // it with --max-memory-mb)"). Other formats stb_image knows (PNM, BMP, ...)
 // are refused: a PNM header alone could claim gigapixels.
-frustum::Result<Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_bytes,
+frustum::Result<image::Image> decode_rgba8(const std::uint8_t* bytes, std::size_t size_bytes,
                                     std::uint64_t max_pixels,
                                     std::uint64_t max_rgba_bytes = UINT64_MAX,
                                     const std::string& budget_note = {});

@@ -64,7 +64,7 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
     }
     const std::uint64_t left = state->max_rgba_bytes > state->decoded_bytes
                                    ? state->max_rgba_bytes - state->decoded_bytes : 0;
-    frustum::Result<Image> decoded =
+    frustum::Result<image::Image> decoded =
         decode_rgba8(bytes, length, state->max_pixels, left, state->budget_note);
     if (!decoded) {
         state->undecoded[image_index] = label + ": " + decoded.error();

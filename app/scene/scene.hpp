@@ -2,6 +2,8 @@
 // consumes. Everything here has been range-checked; indices are in bounds.
 #pragma once
 
+#include "image/image.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -10,13 +12,6 @@
 #include <vector>
 
 namespace scene {
-
-// Decoded RGBA8 image, rows top to bottom as in the file.
-struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> rgba; // width * height * 4
-};
 
 // glTF alphaMode: OPAQUE ignores alpha, MASK discards below alpha_cutoff,
 // BLEND is alpha-blended (drawn after the opaque geometry).
@@ -117,7 +112,9 @@ struct Bounds {
 };
 
 struct Scene {
-    std::vector<Image> images; // empty (0 x 0) where no texture draws the image
+    // Decoded RGBA8, rows top to bottom as in the file; empty (0 x 0) where
+    // no texture draws the image (it is not decoded).
+    std::vector<image::Image> images;
     std::vector<Material> materials;
     std::vector<Mesh> meshes;
     std::vector<Instance> instances;

@@ -69,15 +69,15 @@ frustum::Status TextOverlay::draw(const render::LineProgram& program, frustum::D
     fn.BindBuffer(GL_ARRAY_BUFFER, buffer_.id());
     fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)), vertices.data(),
                   GL_STREAM_DRAW);
-    fn.UseProgram(program.program.id());
-    fn.UniformMatrix4fv(program.view_projection, 1, GL_FALSE, glm::value_ptr(pixels->matrix()));
+    program.use();
+    program.set_view_projection(pixels->matrix());
     fn.Disable(GL_DEPTH_TEST);
     fn.Disable(GL_CULL_FACE);
     fn.Enable(GL_BLEND);
     fn.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    fn.Uniform4fv(program.color, 1, glm::value_ptr(kPanelColor));
+    program.set_color(kPanelColor);
     fn.DrawArrays(GL_TRIANGLES, 0, 6);
-    fn.Uniform4fv(program.color, 1, glm::value_ptr(kTextColor));
+    program.set_color(kTextColor);
     fn.DrawArrays(GL_TRIANGLES, 6, static_cast<GLsizei>(text.triangles.size()));
     fn.Disable(GL_BLEND);
     fn.Enable(GL_DEPTH_TEST);

@@ -42,7 +42,7 @@
 #include <image/image.hpp>
 #include <image/png.hpp>
 #include <render/lens_pass.hpp>
-#include <render/lens_reference.hpp>
+#include <reference/lens_reference.hpp>
 #include <render/mirror_pass.hpp>
 #include <render/scene_pass.hpp>
 #include <render/tile_pass.hpp>

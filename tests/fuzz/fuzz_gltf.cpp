@@ -66,7 +66,7 @@ void check_scene(const scene::Scene& s) {
     const auto bad = [](bool broken, const char* what) {
         if (broken) fail("loaded scene breaks scene.hpp", what);
     };
-    for (const scene::Image& image : s.images) {
+    for (const image::Image& image : s.images) {
         bad(image.width <= 0 || image.height <= 0, "image size <= 0");
         bad(image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4, "image rgba size");
     }

@@ -7,7 +7,7 @@
 #include <frustum/validate.hpp>
 #include <frustum/volume_approximation.hpp>
 #include <render/curved_mirror.hpp>
-#include <render/curved_reference.hpp>
+#include <reference/curved_reference.hpp>
 
 #include <cmath>
 #include <random>

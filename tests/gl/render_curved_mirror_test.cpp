@@ -1,10 +1,10 @@
 // The curved-mirror effect (paper §4.3) against independent references:
 // the planar mirror for a flat cap, and a per-pixel ray-traced reflection
-// (render/curved_reference.hpp) for a curved one.
+// (reference/curved_reference.hpp) for a curved one.
 #include "render_test_support.hpp"
 
 #include <render/curved_mirror.hpp>
-#include <render/curved_reference.hpp>
+#include <reference/curved_reference.hpp>
 
 namespace {
 

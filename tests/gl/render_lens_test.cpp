@@ -1,11 +1,11 @@
 // The lens effect (paper §5.4) against the plain frame and against the
-// per-pixel remap reference (eq. 34 in GLSL, render/lens_reference.hpp).
+// per-pixel remap reference (eq. 34 in GLSL, reference/lens_reference.hpp).
 #include "render_test_support.hpp"
 
 #include <frustum/queries.hpp>
 #include <gl/offscreen_target.hpp>
 #include <render/lens_pass.hpp>
-#include <render/lens_reference.hpp>
+#include <reference/lens_reference.hpp>
 #include <render/scene_pass.hpp>
 
 namespace {

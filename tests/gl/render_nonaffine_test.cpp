@@ -6,7 +6,7 @@
 #include <frustum/queries.hpp>
 #include <gl/offscreen_target.hpp>
 #include <render/non_affine_pass.hpp>
-#include <render/non_affine_reference.hpp>
+#include <reference/non_affine_reference.hpp>
 
 namespace {
 

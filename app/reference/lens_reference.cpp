@@ -1,6 +1,9 @@
-#include "render/lens_reference.hpp"
+#include "reference/lens_reference.hpp"
 
-#include "render/scene_pass.hpp"
+#include "reference/embedded_shaders.hpp"
+
+#include <render/program_support.hpp>
+#include <render/scene_pass.hpp>
 
 #include <frustum/crop.hpp>
 #include <frustum/lens.hpp>
@@ -15,6 +18,38 @@ namespace render {
 namespace {
 
 constexpr const char* kWhere = "render::draw_lens_reference()";
+
+// shaders/lens_remap.*: the per-pixel lens reference (eq. 34 in GLSL). Only
+// this reference uses it, so it is built here, not by every Renderer.
+class LensRemapProgram : public ShaderProgram {
+public:
+    static frustum::Result<LensRemapProgram> build(const gl::Functions& fn) {
+        LensRemapProgram p;
+        if (auto status = p.link(fn, {"lens remap", std::string(shaders::lens_remap_vert),
+                                      std::string(shaders::lens_remap_frag)},
+                                 {{"u_source", &p.source_},
+                                  {"u_source_rect_m", &p.source_rect_m_},
+                                  {"u_frame_px", &p.frame_px_},
+                                  {"u_half_size_m", &p.half_size_m_},
+                                  {"u_lens", &p.lens_}});
+            !status) {
+            return frustum::Error{status.error()};
+        }
+        return p;
+    }
+
+    void set_source_texture_unit(int unit) const { set(source_, unit); }
+    // The unwarped view's near-plane rectangle: x0, y0, x1, y1 in metres.
+    void set_source_rect_m(const glm::vec4& rect_m) const { set(source_rect_m_, rect_m); }
+    void set_frame_px(const glm::vec2& size_px) const { set(frame_px_, size_px); }
+    void set_half_size_m(const glm::vec2& half_m) const { set(half_size_m_, half_m); }
+    void set_lens(const frustum::Lens<float>& lens) const {
+        set(lens_, glm::vec4(lens.center_m.x, lens.center_m.y, lens.radius_m, lens.power));
+    }
+
+private:
+    GLint source_ = -1, source_rect_m_ = -1, frame_px_ = -1, half_size_m_ = -1, lens_ = -1;
+};
 
 // How many times the near rectangle (about its centre) the warped pixel
 // centres reach. eq. 34 moves points radially and monotonically about C, so
@@ -38,18 +73,17 @@ float warped_reach(const frustum::NearPlaneFrame<float>& frame, const frustum::L
     return reach;
 }
 
-void draw_remap(const PassContext& ctx, const gl::Texture& source, const glm::vec4& rect_m, const LensDraw& draw,
-                const frustum::NearPlaneFrame<float>& near, int width_px, int height_px) {
+void draw_remap(const PassContext& ctx, const LensRemapProgram& p, const gl::Texture& source, const glm::vec4& rect_m,
+                const LensDraw& draw, const frustum::NearPlaneFrame<float>& near, int width_px, int height_px) {
     const gl::Functions& fn = ctx.fn;
-    const LensRemapProgram& p = ctx.programs.lens_remap;
-    fn.UseProgram(p.program.id());
+    p.use();
     fn.ActiveTexture(GL_TEXTURE0);
     fn.BindTexture(GL_TEXTURE_2D, source.id());
-    fn.Uniform1i(p.source, 0);
-    fn.Uniform4f(p.source_rect_m, rect_m.x, rect_m.y, rect_m.z, rect_m.w);
-    fn.Uniform2f(p.frame_px, static_cast<float>(width_px), static_cast<float>(height_px));
-    fn.Uniform2f(p.half_size_m, near.half_width_m, near.half_height_m);
-    fn.Uniform4f(p.lens, draw.lens.center_m.x, draw.lens.center_m.y, draw.lens.radius_m, draw.lens.power);
+    p.set_source_texture_unit(0);
+    p.set_source_rect_m(rect_m);
+    p.set_frame_px(glm::vec2(static_cast<float>(width_px), static_cast<float>(height_px)));
+    p.set_half_size_m(glm::vec2(near.half_width_m, near.half_height_m));
+    p.set_lens(draw.lens);
     fn.DrawArrays(GL_TRIANGLES, 0, 3);
     fn.BindTexture(GL_TEXTURE_2D, 0);
 }
@@ -76,6 +110,10 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         return frustum::Error{std::string(kWhere) + ": eq. 34 takes the frame to " + std::to_string(reach) +
                               " times its size, more than the " + std::to_string(kMaxLensReferenceLevels) +
                               " nested levels allow"};
+    }
+    auto program = LensRemapProgram::build(ctx.fn);
+    if (!program) {
+        return frustum::Error{std::string(kWhere) + ": " + program.error()};
     }
     auto vertex_array = gl::VertexArray::create(ctx.fn); // the remap triangle has no attributes
     if (!vertex_array) {
@@ -109,7 +147,7 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         ctx.fn.Disable(GL_DEPTH_TEST);
         ctx.fn.BindVertexArray(vertex_array->id());
         const glm::vec2 half_m = scale * glm::vec2(near->half_width_m, near->half_height_m);
-        draw_remap(ctx, source->color_texture(), glm::vec4(-half_m, half_m), draw, *near, width_px, height_px);
+        draw_remap(ctx, *program, source->color_texture(), glm::vec4(-half_m, half_m), draw, *near, width_px, height_px);
         ctx.fn.BindVertexArray(0);
         set_frame_state(ctx);
     }

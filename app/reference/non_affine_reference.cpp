@@ -1,4 +1,4 @@
-#include "render/non_affine_reference.hpp"
+#include "reference/non_affine_reference.hpp"
 
 #include <algorithm>
 #include <cmath>

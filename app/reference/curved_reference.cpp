@@ -1,4 +1,4 @@
-#include "render/curved_reference.hpp"
+#include "reference/curved_reference.hpp"
 
 #include <frustum/depth_range.hpp>
 

@@ -1,15 +1,8 @@
 #include "image/png.hpp"
 
-// stb's implementation lives here, with internal linkage (see CMakeLists.txt).
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#define STBI_WRITE_NO_STDIO
-#include <stb/stb_image_write.h>
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#define STBI_ONLY_PNG
-#define STBI_NO_STDIO
+// Declarations only: the code is Debian's libstb.so (image/CMakeLists.txt).
 #include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 
 #include <atomic>
 #include <cerrno>
