@@ -15,7 +15,6 @@
 #include <scene/load_gltf.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,25 +32,6 @@ constexpr int kDiffGain = 4;
 
 Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
-
-// "1,2,4" -> {1, 2, 4}.
-std::optional<std::vector<int>> parse_counts(const std::string& text) {
-    std::vector<int> out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        const char* first = text.data() + start;
-        const char* last = text.data() + comma;
-        int value = 0;
-        const auto [end, error] = std::from_chars(first, last, value);
-        if (first == last || error != std::errc() || end != last || value < 1 || value > render::kMaxCurvedPatches) {
-            return std::nullopt;
-        }
-        out.push_back(value);
-        start = comma + 1;
-    }
-    return out;
-}
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -163,49 +143,24 @@ std::string curved_report_help() {
            "usage:\n"
            "  frustum-demo curved-report [options]\n"
            "\n"
-           "options:\n"
-           "  --patches LIST      patch grids G to compare, comma-separated, 1..64 (default 1,2,4,8,16)\n"
-           "  --sagitta M, --cap C, --scene FILE, --camera NAME|INDEX, --size WxH, --backend B,\n"
-           "  --depth D, --out DIR as for frustum-demo render (see frustum-demo --help)\n"
-           "\n"
+           "options:\n" +
+           options_help(kCurvedReport, false) + "effect options (as in render):\n" +
+           options_help(kCurvedReport, true) + "\n" +
            "Writes DIR/curved-<G>.png, DIR/curved-diff-<G>.png (|rendered - reference| x 4 on the\n"
            "mirror) and DIR/curved-reference.png, cropped to the mirror; prints each path on stderr.\n";
 }
 
 std::variant<HelpRequest, CurvedReportRequest, Failure> parse_curved_report(const std::vector<std::string>& args) {
-    CurvedReportRequest request;
-    request.patch_counts = {1, 2, 4, 8, 16};
-    std::vector<std::string> forwarded{"render"};
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& name = args[i];
-        if (name == "--help" || name == "-h") {
-            return HelpRequest{};
-        }
-        if (name == "--effect" || name == "--tiles" || name == "--mirror") {
-            return usage(name + " does not apply to curved-report (see frustum-demo curved-report --help)");
-        }
-        if (name == "--patches") {
-            if (i + 1 >= args.size()) {
-                return usage("--patches needs a value (see frustum-demo curved-report --help)");
-            }
-            const auto counts = parse_counts(args[++i]);
-            if (!counts) {
-                return usage("--patches must be a comma-separated list of whole numbers in 1.." +
-                             std::to_string(render::kMaxCurvedPatches) + ", got '" + args[i] + "'");
-            }
-            request.patch_counts = *counts;
-            continue;
-        }
-        forwarded.push_back(name);
-    }
-    auto parsed = parse_command_line(forwarded);
+    auto parsed = parse_options(kCurvedReport, args);
     if (auto* failure = std::get_if<Failure>(&parsed)) {
         return *failure;
     }
     if (std::holds_alternative<HelpRequest>(parsed)) {
         return HelpRequest{};
     }
-    request.render = std::get<RenderRequest>(parsed);
+    CurvedReportRequest request;
+    request.render = std::get<Settings>(parsed);
+    request.patch_counts = request.render.patch_counts;
     return request;
 }
 
@@ -214,7 +169,9 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
     if (auto status = prepare_output_dir(r.out_dir); !status) {
         return runtime(status.error());
     }
-    auto scene = scene::load_gltf(r.scene_path);
+    scene::LoadOptions load_options;
+    load_options.budget = r.budget;
+    auto scene = scene::load_gltf(r.scene_path, load_options);
     if (!scene) {
         return runtime(scene.error());
     }

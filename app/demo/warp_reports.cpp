@@ -15,7 +15,6 @@
 #include <scene/load_gltf.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,28 +31,7 @@ namespace {
 constexpr int kThresholdLsb = 8; // "visibly different" per RGB channel
 constexpr int kDiffGain = 4;
 
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
-
-// "a,b,c" -> values, each accepted by `accept`.
-template <class T>
-std::optional<std::vector<T>> parse_list(const std::string& text, const std::function<bool(T)>& accept) {
-    std::vector<T> out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        const char* first = text.data() + start;
-        const char* last = text.data() + comma;
-        T value{};
-        const auto [end, error] = std::from_chars(first, last, value);
-        if (first == last || error != std::errc() || end != last || !accept(value)) {
-            return std::nullopt;
-        }
-        out.push_back(value);
-        start = comma + 1;
-    }
-    return out;
-}
 
 std::string fixed(double value, int decimals) {
     char buffer[32];
@@ -149,7 +127,9 @@ struct Session {
 
 frustum::Result<std::unique_ptr<Session>> open_session(const RenderRequest& r, const Reporter& reporter) {
     auto s = std::make_unique<Session>();
-    auto scene = scene::load_gltf(r.scene_path);
+    scene::LoadOptions load_options;
+    load_options.budget = r.budget;
+    auto scene = scene::load_gltf(r.scene_path, load_options);
     if (!scene) {
         return frustum::Error{scene.error()};
     }
@@ -163,8 +143,7 @@ frustum::Result<std::unique_ptr<Session>> open_session(const RenderRequest& r, c
         return frustum::Error{cameras.error()};
     }
     s->cameras.emplace(std::move(*cameras));
-    auto context = r.backend ? gl::create_offscreen_context(*r.backend, {})
-                             : gl::create_offscreen_context_with_fallback({});
+    auto context = make_context(r, reporter);
     if (!context) {
         return frustum::Error{context.error()};
     }
@@ -428,12 +407,9 @@ std::string warp_report_help(const std::string& command) {
                "usage:\n"
                "  frustum-demo lens-report [options]\n"
                "\n"
-               "options:\n"
-               "  --grids LIST        grid sizes N (N x N tiles), comma-separated (default 4,8,16,32)\n"
-               "  --supersampling K   reference texture resolution / frame resolution, 1..8 (default 4)\n"
-               "  --runs N            timed repetitions per frame, median reported, 1..100 (default 5)\n"
-               "  --lens-power P, --scene FILE, --camera NAME|INDEX, --size WxH, --backend B,\n"
-               "  --depth D, --out DIR as for frustum-demo render (see frustum-demo --help)\n"
+               "options:\n" +
+               options_help(kLensReport, false) + "effect options (as in render):\n" +
+               options_help(kLensReport, true) +
                "\n"
                "Writes DIR/lens-<N>.png, DIR/lens-diff-<N>.png (|tiled - reference| x 4) and\n"
                "DIR/lens-reference.png; prints each path on stderr.\n";
@@ -444,14 +420,8 @@ std::string warp_report_help(const std::string& command) {
            "usage:\n"
            "  frustum-demo nonaffine-report [options]\n"
            "\n"
-           "options:\n"
-           "  --edges LIST        subdivision edge lengths in metres, comma-separated, 0 = none\n"
-           "                      (default 0,1,0.5,0.25,0.1)\n"
-           "  --runs N            timed repetitions per frame, median reported, 1..100 (default 5)\n"
-           "  --slit M            depth (m) where the left and right planes meet (default 2.6)\n"
-           "  --pivot M           depth (m) where they cut the camera's side planes (default 8)\n"
-           "  --scene FILE, --camera NAME|INDEX, --size WxH, --backend B, --depth D, --out DIR\n"
-           "                      as for frustum-demo render (see frustum-demo --help)\n"
+           "options:\n" +
+           options_help(kNonAffineReport, false) +
            "\n"
            "Writes DIR/nonaffine-naive.png, DIR/nonaffine-cull.png, DIR/nonaffine-<edge>m.png,\n"
            "DIR/nonaffine-reference.png, DIR/nonaffine-diff-cull.png (culled, not subdivided, vs the\n"
@@ -460,79 +430,29 @@ std::string warp_report_help(const std::string& command) {
 
 std::variant<HelpRequest, WarpReportRequest, Failure> parse_warp_report(const std::vector<std::string>& args) {
     WarpReportRequest request;
-    const std::string command = args.empty() ? std::string() : args[0];
-    request.kind = command == "lens-report" ? WarpReportRequest::Kind::Lens : WarpReportRequest::Kind::NonAffine;
-    request.grids = {4, 8, 16, 32};
-    request.max_edges_m = {0.0f, 1.0f, 0.5f, 0.25f, 0.1f};
-    const std::string hint = " (see frustum-demo " + command + " --help)";
-    std::vector<std::string> forwarded{"render"};
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& name = args[i];
-        if (name == "--help" || name == "-h") {
-            return HelpRequest{};
-        }
-        const bool own = name == "--grids" || name == "--edges" || name == "--supersampling" || name == "--runs" ||
-                         name == "--slit" || name == "--pivot";
-        if (!own) {
-            if (name == "--effect" || name == "--tiles" || name == "--mirror" || name == "--lens-grid") {
-                return usage(name + " does not apply to " + command + hint);
-            }
-            forwarded.push_back(name);
-            continue;
-        }
-        if (i + 1 >= args.size()) {
-            return usage(name + " needs a value" + hint);
-        }
-        const std::string& value = args[++i];
-        const std::string got = ", got '" + value + "'";
-        if (name == "--grids" && request.kind == WarpReportRequest::Kind::Lens) {
-            auto grids = parse_list<int>(value, [](int g) { return g >= 1 && g <= kMaxLensGrid; });
-            if (!grids) {
-                return usage("--grids must be a comma-separated list of whole numbers in 1.." +
-                             std::to_string(kMaxLensGrid) + got);
-            }
-            request.grids = *grids;
-        } else if (name == "--edges" && request.kind == WarpReportRequest::Kind::NonAffine) {
-            auto edges = parse_list<float>(value, [](float e) { return e >= 0.0f && e <= 100.0f; });
-            if (!edges) {
-                return usage("--edges must be a comma-separated list of lengths in [0, 100] metres" + got);
-            }
-            request.max_edges_m = *edges;
-        } else if (name == "--supersampling" && request.kind == WarpReportRequest::Kind::Lens) {
-            auto k = parse_list<int>(value, [](int v) { return v >= 1 && v <= 8; });
-            if (!k || k->size() != 1) {
-                return usage("--supersampling must be a whole number in 1..8" + got);
-            }
-            request.supersampling = k->front();
-        } else if ((name == "--slit" || name == "--pivot") && request.kind == WarpReportRequest::Kind::NonAffine) {
-            auto depth = parse_list<float>(value, [](float d) { return d > 0.0f && d <= 1000.0f; });
-            if (!depth || depth->size() != 1) {
-                return usage(name + " must be a depth in (0, 1000] metres" + got);
-            }
-            (name == "--slit" ? request.slit_depth_m : request.pivot_depth_m) = depth->front();
-        } else if (name == "--runs") {
-            auto runs = parse_list<int>(value, [](int v) { return v >= 1 && v <= 100; });
-            if (!runs || runs->size() != 1) {
-                return usage("--runs must be a whole number in 1..100" + got);
-            }
-            request.runs = runs->front();
-        } else {
-            return usage(name + " does not apply to " + command + hint);
-        }
-    }
-    auto parsed = parse_command_line(forwarded);
+    request.kind = !args.empty() && args[0] == "lens-report" ? WarpReportRequest::Kind::Lens
+                                                             : WarpReportRequest::Kind::NonAffine;
+    auto parsed = parse_options(request.kind == WarpReportRequest::Kind::Lens ? kLensReport : kNonAffineReport, args);
     if (auto* failure = std::get_if<Failure>(&parsed)) {
         return *failure;
     }
     if (std::holds_alternative<HelpRequest>(parsed)) {
         return HelpRequest{};
     }
-    request.render = std::get<RenderRequest>(parsed);
-    const int smaller_side = std::min(request.render.width_px, request.render.height_px);
+    request.render = std::get<Settings>(parsed);
+    const Settings& s = request.render;
+    request.grids = s.grids;
+    request.max_edges_m = s.max_edges_m;
+    request.slit_depth_m = s.fit.slit_m.value_or(0.0f);
+    request.pivot_depth_m = s.fit.pivot_m.value_or(0.0f);
+    request.supersampling = s.supersampling;
+    request.runs = s.runs;
+    const int smaller_side = std::min(s.width_px, s.height_px);
     for (int grid : request.grids) {
         if (request.kind == WarpReportRequest::Kind::Lens && grid > smaller_side) {
-            return usage("--grids " + std::to_string(grid) + " needs at least one pixel per tile, but the image is " +
-                         std::to_string(request.render.width_px) + "x" + std::to_string(request.render.height_px));
+            return Failure{ExitStatus::UsageError,
+                           "--grids " + std::to_string(grid) + " needs at least one pixel per tile, but the image is " +
+                               std::to_string(s.width_px) + "x" + std::to_string(s.height_px)};
         }
     }
     return request;

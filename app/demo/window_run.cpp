@@ -43,7 +43,9 @@ struct Session {
 std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest& request,
                                                             const std::function<void(std::string_view)>& note) {
     auto session = std::make_unique<Session>();
-    auto scene = scene::load_gltf(request.scene_path);
+    scene::LoadOptions load_options;
+    load_options.budget = request.budget;
+    auto scene = scene::load_gltf(request.scene_path, load_options);
     if (!scene) {
         return runtime(scene.error());
     }
@@ -55,7 +57,11 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
     session->camera_index = *camera_index;
     session->effects = setup_effects(session->scene, request, Reporter{note, note});
     gl::WindowOptions options;
-    options.title = window::window_title(request.effect, std::nullopt);
+    options.title = window::window_title(request.effects.front(), std::nullopt);
+    if (request.verbose) {
+        options.context.debug = true;
+        options.context.debug_sink = [note](std::string_view line) { note(line); };
+    }
     options.width = request.width_px;
     options.height = request.height_px;
     options.vsync = !request.frames; // scripted runs go as fast as they can
@@ -68,8 +74,14 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
     if (!fn) {
         return runtime(fn.error());
     }
-    if (auto samples = gl::choose_samples(*fn, request.msaa_samples); !samples) {
+    auto samples = gl::choose_samples(*fn, request.msaa_samples);
+    if (!samples) {
         return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
+    }
+    if (request.verbose) {
+        note("context: " + gl::summary(session->window->describe()));
+        note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" + std::to_string(gl::max_samples(*fn)) +
+             ")");
     }
     session->fn = std::make_unique<gl::Functions>(*fn);
     auto renderer = render::Renderer::create(*session->window, *session->fn, session->scene);
@@ -87,7 +99,7 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
 
 window::ViewerState initial_state(const WindowRequest& request) {
     window::ViewerState state;
-    state.effect = request.effect;
+    state.effect = request.effects.front();
     state.tile_columns = request.tile_columns;
     state.tile_rows = request.tile_rows;
     state.mirror_method = request.mirror;
