@@ -50,7 +50,8 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
 // fails removes the folders it created while they are still empty.
 std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter);
 
-// The offscreen context for a request: exactly --backend when given,
+// The offscreen context of render and of every report (the one fallback:
+// gl::create_offscreen_context_with_fallback is not used by the app): exactly --backend when given,
 // otherwise EGL, then OSMesa with a note. --verbose requests a debug context
 // whose KHR_debug messages go to reporter.note.
 frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter);
