@@ -30,7 +30,6 @@ constexpr int kThresholdLsb = 24; // "visibly wrong": as the planar mirror tests
 constexpr int kTimedRuns = 5;     // best of these: the machine may be shared
 constexpr int kDiffGain = 4;
 
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
@@ -169,23 +168,16 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
     if (auto status = prepare_output_dir(r.out_dir); !status) {
         return runtime(status.error());
     }
-    scene::LoadOptions load_options;
-    load_options.budget = r.budget;
-    auto scene = scene::load_gltf(r.scene_path, load_options);
-    if (!scene) {
-        return runtime(scene.error());
+    auto owned = std::make_unique<Session>(); // on the heap: GL objects point to its members
+    Session& session = *owned;
+    if (auto failure = load_session(session, r, true)) {
+        return *failure;
     }
+    scene::Scene* scene = &session.scene;
     if (!scene->mirror) {
         return runtime("curved-report: the scene has no mirror (a node named 'mirror', assets/README.md)");
     }
-    auto camera_index = render::find_camera(*scene, r.camera);
-    if (!camera_index) {
-        return usage(camera_index.error());
-    }
-    auto cameras = render::make_cameras(*scene, *camera_index, r.width_px, r.height_px);
-    if (!cameras) {
-        return runtime(cameras.error());
-    }
+    const render::Cameras* cameras = &*session.cameras;
     auto mirror = render::CurvedMirror::create(*scene->mirror, r.curved.shape, r.curved.sagitta_m);
     if (!mirror) {
         return runtime(mirror.error());
@@ -195,18 +187,11 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
     if (eye.w != 1.0f) {
         return runtime("curved-report: the camera must be perspective");
     }
-    auto context = make_context(r, reporter);
-    if (!context) {
-        return runtime(context.error());
+    if (auto failure = start_gl(session, r, reporter)) {
+        return *failure;
     }
-    auto fn = gl::Functions::load(**context);
-    if (!fn) {
-        return runtime(fn.error());
-    }
-    auto renderer = render::Renderer::create(**context, *fn, *scene);
-    if (!renderer) {
-        return runtime(renderer.error());
-    }
+    render::Renderer* renderer = &*session.renderer;
+    const std::unique_ptr<gl::Context>& context = session.context;
 
     reporter.progress("tracing the references");
     const auto trace_start = std::chrono::steady_clock::now();
@@ -368,7 +353,7 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
        << " m, over the scene's mirror; camera '" << cameras->main.name << "', " << r.width_px << "x" << r.height_px
        << "; " << compared << " mirror pixels compared; reference traced in " << fixed(trace_ms, 0)
        << " ms; planar mirror frame (oblique): " << fixed(*planar_ms, 1) << " ms; GL: "
-       << (*context)->describe().renderer << ".\n\n"
+       << context->describe().renderer << ".\n\n"
        << errors.str() << "\n" << fits.str() << (failures.empty() ? "" : "\nPatches without a frustum (clear colour):\n")
        << failures;
     report.markdown = md.str();

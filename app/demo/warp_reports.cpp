@@ -90,15 +90,9 @@ std::string error_cells(const ImageError& e) {
            "%";
 }
 
-// Everything a report draws with: scene, cameras, context, renderer, one
-// target of the frame's size and a pass context on it.
-// Members die in reverse: GL objects, then the table they point to, then the context.
-struct Session {
-    scene::Scene scene;
-    std::optional<render::Cameras> cameras;
-    std::unique_ptr<gl::Context> context;
-    std::unique_ptr<gl::Functions> fn; // stable address: gl objects point to it
-    std::optional<render::Renderer> renderer;
+// The session (demo/session.hpp) plus one target of the frame's size and a
+// depth policy for the report's own passes.
+struct ReportSession : Session {
     std::optional<render::DepthPolicy> depth;
     std::optional<gl::OffscreenTarget> frame;
 
@@ -125,48 +119,22 @@ struct Session {
     }
 };
 
-frustum::Result<std::unique_ptr<Session>> open_session(const RenderRequest& r, const Reporter& reporter) {
-    auto s = std::make_unique<Session>();
-    scene::LoadOptions load_options;
-    load_options.budget = r.budget;
-    auto scene = scene::load_gltf(r.scene_path, load_options);
-    if (!scene) {
-        return frustum::Error{scene.error()};
+std::variant<std::unique_ptr<ReportSession>, Failure> open_session(const RenderRequest& r, const Reporter& reporter) {
+    auto s = std::make_unique<ReportSession>();
+    if (auto failure = load_session(*s, r, true)) {
+        return *failure;
     }
-    s->scene = std::move(*scene);
-    auto camera_index = render::find_camera(s->scene, r.camera);
-    if (!camera_index) {
-        return frustum::Error{camera_index.error()};
+    if (auto failure = start_gl(*s, r, reporter)) {
+        return *failure;
     }
-    auto cameras = render::make_cameras(s->scene, *camera_index, r.width_px, r.height_px);
-    if (!cameras) {
-        return frustum::Error{cameras.error()};
-    }
-    s->cameras.emplace(std::move(*cameras));
-    auto context = make_context(r, reporter);
-    if (!context) {
-        return frustum::Error{context.error()};
-    }
-    s->context = std::move(*context);
-    reporter.note("context: " + gl::summary(s->context->describe()));
-    auto fn = gl::Functions::load(*s->context);
-    if (!fn) {
-        return frustum::Error{fn.error()};
-    }
-    s->fn = std::make_unique<gl::Functions>(*fn);
-    auto renderer = render::Renderer::create(*s->context, *s->fn, s->scene);
-    if (!renderer) {
-        return frustum::Error{renderer.error()};
-    }
-    s->renderer.emplace(std::move(*renderer));
     auto depth = render::DepthPolicy::apply(*s->fn, *s->context, r.depth);
     if (!depth) {
-        return frustum::Error{depth.error()};
+        return runtime(depth.error());
     }
     s->depth.emplace(*depth);
     auto frame = gl::OffscreenTarget::create(*s->fn, {r.width_px, r.height_px});
     if (!frame) {
-        return frustum::Error{frame.error()};
+        return runtime(frame.error());
     }
     s->frame.emplace(std::move(*frame));
     return s;
@@ -192,7 +160,7 @@ private:
     WarpReport& report_;
 };
 
-std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, Session& s, const Reporter& reporter) {
+std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, ReportSession& s, const Reporter& reporter) {
     const RenderRequest& r = request.render;
     WarpReport report;
     Writer write(r.out_dir, reporter, report);
@@ -287,7 +255,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     return report;
 }
 
-std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& request, Session& s,
+std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& request, ReportSession& s,
                                                    const Reporter& reporter) {
     const RenderRequest& r = request.render;
     WarpReport report;
@@ -462,12 +430,13 @@ std::variant<WarpReport, Failure> run_warp_report(const WarpReportRequest& reque
     if (auto status = prepare_output_dir(request.render.out_dir); !status) {
         return runtime(status.error());
     }
-    auto session = open_session(request.render, reporter);
-    if (!session) {
-        return runtime(session.error());
+    auto opened = open_session(request.render, reporter);
+    if (auto* failure = std::get_if<Failure>(&opened)) {
+        return *failure;
     }
-    return request.kind == WarpReportRequest::Kind::Lens ? lens_report(request, **session, reporter)
-                                                         : nonaffine_report(request, **session, reporter);
+    ReportSession& session = *std::get<std::unique_ptr<ReportSession>>(opened);
+    return request.kind == WarpReportRequest::Kind::Lens ? lens_report(request, session, reporter)
+                                                         : nonaffine_report(request, session, reporter);
 }
 
 } // namespace demo
