@@ -6,12 +6,6 @@
 #include <utility>
 
 namespace demo {
-namespace {
-
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
-
-} // namespace
-
 unsigned long long output_image_bytes(int width_px, int height_px, std::size_t effects) {
     const unsigned long long w = static_cast<unsigned long long>(width_px);
     const unsigned long long h = static_cast<unsigned long long>(height_px);

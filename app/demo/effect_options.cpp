@@ -15,7 +15,6 @@ namespace {
 
 constexpr float kMaxDepthM = 1000.0f; // --slit, --pivot (as nonaffine-report)
 
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 std::string got(const std::string& value) { return ", got '" + value + "'"; }
 
 std::optional<Failure> apply_tiles(EffectSettings& s, const std::string& value) {

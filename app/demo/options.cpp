@@ -19,7 +19,6 @@ constexpr unsigned kOffscreen = kRender | kReports; // --backend, --depth, --out
 
 using Apply = std::optional<Failure> (*)(Settings&, const std::string&);
 
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 std::string quoted(const std::string& value) { return "'" + value + "'"; }
 
 // "a,b,c" -> values, each accepted by `accept`.

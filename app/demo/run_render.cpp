@@ -21,7 +21,6 @@
 namespace demo {
 namespace {
 
-Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
 std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
     return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne

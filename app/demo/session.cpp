@@ -5,12 +5,6 @@
 #include <utility>
 
 namespace demo {
-namespace {
-
-Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
-
-} // namespace
-
 std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size) {
     scene::LoadOptions load_options;
     load_options.budget = settings.budget;

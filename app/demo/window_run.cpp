@@ -24,7 +24,6 @@
 namespace demo {
 namespace {
 
-Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
 // Everything one frame loop needs, made once: the session (demo/session.hpp)
 // with the window as its context, and the painter, which dies before them.
