@@ -6,6 +6,7 @@
 #include <utility>
 
 namespace demo {
+
 unsigned long long output_image_bytes(int width_px, int height_px, std::size_t effects) {
     const unsigned long long w = static_cast<unsigned long long>(width_px);
     const unsigned long long h = static_cast<unsigned long long>(height_px);

@@ -5,6 +5,7 @@
 #include <utility>
 
 namespace demo {
+
 std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size) {
     scene::LoadOptions load_options;
     load_options.budget = settings.budget;
