@@ -48,7 +48,11 @@ frustum::Result<std::unique_ptr<gl::Context>> make_context(const Settings& setti
         return egl;
     }
     reporter.note("note: no EGL context (" + egl.error() + "); using OSMesa");
-    return gl::create_offscreen_context(gl::Backend::OsMesa, options);
+    auto osmesa = gl::create_offscreen_context(gl::Backend::OsMesa, options);
+    if (!osmesa) {
+        return frustum::Error{"no GL context: egl: " + egl.error() + "; osmesa: " + osmesa.error()};
+    }
+    return osmesa;
 }
 
 std::optional<Failure> start_gl(Session& session, const Settings& settings, const Reporter& reporter,
