@@ -33,8 +33,8 @@ inline constexpr float kMaxLensPower = 2.0f;
 inline constexpr int kMaxTileSide = 8192;
 inline constexpr long long kMaxTiles = 16384;
 
-// What the effect options set (RenderRequest and WindowRequest are these
-// plus their own options). Unset parameters are derived from the scene
+// What the effect options set (demo::Settings, what every command's
+// options set, is these plus the others). Unset parameters are derived from the scene
 // (render/scene_fit.hpp, render/mirror_placement.hpp, docs/any-scene.md).
 struct EffectSettings {
     int tile_columns = 3, tile_rows = 2; // --tiles

@@ -81,6 +81,7 @@ window::ViewerState initial_state(const WindowRequest& request) {
     state.tile_columns = request.tile_columns;
     state.tile_rows = request.tile_rows;
     state.mirror_method = request.mirror;
+    state.lens_power = request.lens_power; // --lens-power: the start; [ and ] change it
     state.show_help = request.help_overlay;
     state.show_inset = request.inset;
     state.msaa_samples = request.msaa_samples;
