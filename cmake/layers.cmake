@@ -36,7 +36,7 @@ set(FRUSTUM_LAYERS
   "tests/robustness:scene vectors image frustum"
   "tests/gl:render reference scene gl image frustum"
   "tests/bench:render reference scene gl image frustum"
-  "tests/window:window render scene gl image frustum"
+  "tests/window:window demo render scene gl image frustum"
   "tests/web:image frustum"
   "tests:tests") # tests/sample_files.hpp, shared by the suites as "../sample_files.hpp"
 
@@ -50,7 +50,8 @@ set(FRUSTUM_LAYER_TARGETS
   "render:frustum_render"
   "reference:frustum_reference"
   "window:frustum_window"
-  "vectors:frustum_vectors_lib")
+  "vectors:frustum_vectors_lib"
+  "demo:frustum_demo_cli")
 
 # <target> sees "<layer>/..." as <folder>/... (PUBLIC: so do the targets
 # that link it). The root holds nothing else.

@@ -1,9 +1,9 @@
 // frustum-demo curved-report: the curved mirror (paper §4.3) rendered with
 // G x G patches for several G and compared against a per-pixel ray-traced
 // reference, with the fit's iterations and objective per patch.
-//   frustum-demo curved-report [--patches 1,2,4,8,16] [--out DIR] [--scene FILE]
-//       [--camera NAME|INDEX] [--size WxH] [--backend egl|osmesa]
-//       [--depth zero_to_one|minus_one_to_one] [--sagitta M] [--cap sphere|cylinder]
+//   frustum-demo curved-report [--patches 1,2,4,8,16] [--sagitta M] [--cap C]
+//       [the scene, size, context and budget options of render, --verbose]
+// (its rows of the option table, demo/options.hpp; any other is refused).
 // Writes DIR/curved-<G>.png, curved-diff-<G>.png and curved-reference.png
 // (cropped to the mirror) and prints a Markdown report on stdout.
 #pragma once

@@ -5,6 +5,8 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <tuple>
 #include <utility>
 
@@ -13,7 +15,6 @@ namespace {
 
 constexpr float kMaxDepthM = 1000.0f; // --slit, --pivot (as nonaffine-report)
 
-Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
 std::string got(const std::string& value) { return ", got '" + value + "'"; }
 
 std::optional<Failure> apply_tiles(EffectSettings& s, const std::string& value) {
@@ -150,49 +151,49 @@ std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) 
 const std::vector<EffectOption>& effect_options() {
     static const std::vector<EffectOption> table = {
         {"--tiles", "NxM", "tiles effect: columns x rows, each >= 1 and at most one per pixel (default 3x2)",
-         apply_tiles},
+         apply_tiles, kRender | kWindow, "4x3"},
         {"--tile-borders", nullptr, "tiles effect: draw each tile's border", apply_tile_borders},
         {"--mirror", "M",
          "reflection camera: oblique (reflect + oblique near plane, default) |\n"
          "rectangle (reflected eye through the mirror) | reflect_only (no near\n"
          "plane: shows what is behind the mirror)",
-         apply_mirror},
+         apply_mirror, kRender | kWindow, "rectangle"},
         {"--mirror-plane", "a,b,c,d",
          "a mirror on the plane a x + b y + c z + d = 0, reflecting towards\n"
          "(a, b, c): a square of the model's diagonal under the model's centre\n"
          "(default: the scene's node \"mirror\", else a floor under the model)",
-         apply_mirror_plane},
+         apply_mirror_plane, kRender | kWindow, "0,1,0,0"},
         {"--mirror-rect", "c,a,b",
          "a mirror rectangle: nine numbers cx,cy,cz,ax,ay,az,bx,by,bz, its centre\n"
          "and two sides; reflects towards a x b",
-         apply_mirror_rect},
-        {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches},
+         apply_mirror_rect, kRender | kWindow, "0,0,0,1,0,0,0,1,0"},
+        {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches, kRender | kWindow, "8"},
         {"--sagitta", "M",
          "curved effect: the cap's bulge at its centre in metres (default a fifth\n"
          "of the mirror's half-diagonal; 0 = the planar mirror; at most half of it)",
-         apply_sagitta},
+         apply_sagitta, kRender | kWindow | kCurvedReport, "0.1"},
         {"--cap", "C", "curved effect: sphere (default) | cylinder (axis along the mirror's\nsecond side)",
-         apply_cap},
+         apply_cap, kRender | kWindow | kCurvedReport, "cylinder"},
         {"--lens-grid", "N", "lens effect: N x N tiles, 1..128 (default 16, at most one per pixel)",
-         apply_lens_grid},
-        {"--lens-power", "P", "lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens; stronger powers make tiles degenerate in single precision)", apply_lens_power},
+         apply_lens_grid, kRender | kWindow, "8"},
+        {"--lens-power", "P", "lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens; stronger powers make tiles degenerate in single precision)", apply_lens_power, kRender | kWindow | kLensReport, "1.5"},
         {"--lens-center", "x,y",
          "lens effect: the lens centre in the frame, each in [-1, 1] (default:\n"
          "the scene's lens node, else the model's centre as seen)",
-         apply_lens_center},
+         apply_lens_center, kRender | kWindow, "0.1,-0.2"},
         {"--lens-radius", "R",
          "lens effect: the lens radius as a fraction of the frame's half height,\n"
          "(0, 1] (default: the lens node's, else half the model's as seen,\n"
          "within 0.1..0.4)",
-         apply_lens_radius},
+         apply_lens_radius, kRender | kWindow, "0.3"},
         {"--slit", "M",
          "nonaffine effect: the slit's depth in front of the eye, (0, 1000] m,\n"
          "below --pivot (default a third of the pivot)",
-         apply_slit},
+         apply_slit, kRender | kWindow, "2"},
         {"--pivot", "M",
          "nonaffine effect: where the slit planes meet the camera's side planes,\n"
          "(0, 1000] m, below the far distance (default: the model centre's depth)",
-         apply_pivot},
+         apply_pivot, kRender | kWindow, "5"},
     };
     return table;
 }
@@ -206,24 +207,14 @@ const EffectOption* find_effect_option(std::string_view name) {
     return nullptr;
 }
 
-std::string effect_options_help() {
-    constexpr std::size_t kColumn = 22; // "  --lens-center x,y   "
-    std::string text;
-    for (const EffectOption& option : effect_options()) {
-        std::string head = std::string("  ") + option.name + (option.value ? std::string(" ") + option.value : "");
-        head.resize(std::max(kColumn, head.size() + 1), ' ');
-        std::string help = option.help;
-        for (std::size_t at = help.find('\n'); at != std::string::npos; at = help.find('\n', at + 1)) {
-            help.insert(at + 1, std::string(kColumn, ' '));
-        }
-        text += head + help + "\n";
-    }
-    return text;
-}
-
 std::optional<Failure> check_effect_settings(const EffectSettings& settings) {
     if (settings.mirror_place.plane && settings.mirror_place.rect) {
         return usage("--mirror-plane and --mirror-rect both place the mirror; give one of them");
+    }
+    const long long tiles = static_cast<long long>(settings.tile_columns) * settings.tile_rows;
+    if (tiles > kMaxTiles) {
+        return usage("--tiles " + std::to_string(settings.tile_columns) + "x" + std::to_string(settings.tile_rows) +
+                     " is " + std::to_string(tiles) + " tiles, over the limit of " + std::to_string(kMaxTiles));
     }
     return std::nullopt;
 }

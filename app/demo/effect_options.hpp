@@ -1,9 +1,12 @@
-// The effect options `render` and `window` share, as one table: each row is
-// a name, its value's shape, its help line and the function that applies
-// it, so both parsers accept the same names with the same bounds and the
-// same messages, and both help texts list the same lines.
+// The effect options, the effect section of frustum-demo's one option table
+// (demo/options.hpp): each row is a name, its value's shape, its help line,
+// the function that applies it, the commands that accept it (render and
+// window unless the row says otherwise) and a value it accepts (for the test
+// that walks the table). Every command parses and lists them through the
+// same table, so they have the same bounds and messages everywhere.
 #pragma once
 
+#include "demo/command.hpp"
 #include "demo/failure.hpp"
 
 #include <render/curved_mirror.hpp>
@@ -24,10 +27,14 @@ namespace demo {
 // at grid 128, power 2 at grid 256, power 5 already at grid 16).
 inline constexpr int kMaxLensGrid = 128;
 inline constexpr float kMaxLensPower = 2.0f;
+// --tiles NxM: each count 1..kMaxTileSide, at most kMaxTiles tiles (128 x
+// 128) in all, the same in render and window (the window's + and - keys
+// step within 1..16 per direction, but a larger start stays as given).
 inline constexpr int kMaxTileSide = 8192;
+inline constexpr long long kMaxTiles = 16384;
 
-// What the effect options set (RenderRequest and WindowRequest are these
-// plus their own options). Unset parameters are derived from the scene
+// What the effect options set (demo::Settings, what every command's
+// options set, is these plus the others). Unset parameters are derived from the scene
 // (render/scene_fit.hpp, render/mirror_placement.hpp, docs/any-scene.md).
 struct EffectSettings {
     int tile_columns = 3, tile_rows = 2; // --tiles
@@ -47,6 +54,8 @@ struct EffectOption {
     const char* help;  // what follows the name in --help (may hold '\n' + indent for more lines)
     // Applies the value; a usage Failure naming the value when it is out of range.
     std::optional<Failure> (*apply)(EffectSettings& settings, const std::string& value);
+    unsigned commands = kRender | kWindow; // Command bits
+    const char* example = nullptr;         // a value the row accepts (tests/cli/demo_options_test.cpp)
 };
 
 const std::vector<EffectOption>& effect_options();
@@ -54,11 +63,8 @@ const std::vector<EffectOption>& effect_options();
 // The row named `name`; nullptr for any other name.
 const EffectOption* find_effect_option(std::string_view name);
 
-// The rows as --help lines, "  --slit M           ...".
-std::string effect_options_help();
-
-// Checks that need several options together (e.g. --mirror-plane and
-// --mirror-rect are exclusive).
+// Checks that need several options together (--mirror-plane and
+// --mirror-rect are exclusive; --tiles within kMaxTiles in all).
 std::optional<Failure> check_effect_settings(const EffectSettings& settings);
 
 } // namespace demo

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace demo {
 
@@ -16,5 +17,8 @@ struct Failure {
     ExitStatus status;
     std::string message;
 };
+
+inline Failure usage(std::string message) { return {ExitStatus::UsageError, std::move(message)}; }
+inline Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
 } // namespace demo

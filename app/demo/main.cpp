@@ -58,16 +58,7 @@ int warp_report_main(const std::vector<std::string>& args) {
     return 0;
 }
 
-int run_main(const std::vector<std::string>& args) {
-    if (!args.empty() && args[0] == "curved-report") {
-        return curved_report_main(args);
-    }
-    if (!args.empty() && (args[0] == "lens-report" || args[0] == "nonaffine-report")) {
-        return warp_report_main(args);
-    }
-    if (!args.empty() && args[0] == "window") {
-        return demo::window_main(args); // prints its own results and errors
-    }
+int render_main(const std::vector<std::string>& args) {
     const auto parsed = demo::parse_command_line(args);
     if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
         std::cerr << "frustum-demo: error: " << failure->message << '\n';
@@ -92,6 +83,37 @@ int run_main(const std::vector<std::string>& args) {
         std::cerr << "frustum-demo: error: effect " << failure << '\n';
     }
     return run.failed_effects.empty() ? 0 : static_cast<int>(demo::ExitStatus::RuntimeFailure);
+}
+
+// The commands: name -> parse, run, print (args[0] is the name).
+struct CommandEntry {
+    const char* name;
+    int (*main)(const std::vector<std::string>& args);
+};
+constexpr CommandEntry kCommandTable[] = {
+    {"render", render_main},
+    {"window", demo::window_main}, // prints its own results and errors ("frustum-demo window: ...")
+    {"curved-report", curved_report_main},
+    {"lens-report", warp_report_main},
+    {"nonaffine-report", warp_report_main},
+};
+
+int run_main(const std::vector<std::string>& args) {
+    if (args.empty()) {
+        std::cerr << "frustum-demo: error: expected a command: render" << demo::help_hint(demo::kRender) << '\n';
+        return static_cast<int>(demo::ExitStatus::UsageError);
+    }
+    if (args[0] == "--help" || args[0] == "-h") {
+        std::cout << demo::help_text();
+        return 0;
+    }
+    for (const CommandEntry& command : kCommandTable) {
+        if (args[0] == command.name) {
+            return command.main(args);
+        }
+    }
+    std::cerr << "frustum-demo: error: unknown command '" << args[0] << "'" << demo::help_hint(demo::kRender) << '\n';
+    return static_cast<int>(demo::ExitStatus::UsageError);
 }
 
 } // namespace

@@ -21,7 +21,6 @@
 namespace demo {
 namespace {
 
-Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
 std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
     return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne
@@ -58,24 +57,6 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
     return setup;
 }
 
-frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter) {
-    gl::ContextOptions options;
-    if (request.verbose) {
-        options.debug = true;
-        options.debug_sink = [note = reporter.note](std::string_view line) { note(line); };
-    }
-    if (request.backend) {
-        return gl::create_offscreen_context(*request.backend, options);
-    }
-    auto egl = gl::create_offscreen_context(gl::Backend::Egl, options);
-    if (egl) {
-        return egl;
-    }
-    reporter.note("note: no EGL context (" + egl.error() + "); using OSMesa");
-    return gl::create_offscreen_context(gl::Backend::OsMesa, options);
-}
-
-
 namespace {
 
 std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
@@ -83,46 +64,30 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         return runtime(status.error());
     }
     g_activity = "loading the scene";
-    scene::LoadOptions load_options;
-    load_options.budget = request.budget;
-    auto scene = scene::load_gltf(request.scene_path, load_options);
-    if (!scene) {
-        return runtime(scene.error());
-    }
-    auto camera_index = render::find_camera(*scene, request.camera);
-    if (!camera_index) {
-        return Failure{ExitStatus::UsageError, camera_index.error()};
+    auto owned = std::make_unique<Session>(); // on the heap: GL objects point to its members
+    Session& session = *owned;
+    if (auto failure = load_session(session, request, true)) {
+        return *failure;
     }
     g_activity = "rendering";
-    auto cameras = render::make_cameras(*scene, *camera_index, request.width_px, request.height_px);
-    if (!cameras) {
-        return runtime(cameras.error());
-    }
-    const EffectSetup setup = setup_effects(*scene, request, reporter); // after the cameras: they frame the model
+    const render::Cameras* cameras = &*session.cameras;
+    scene::Scene* scene = &session.scene;
+    // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
+    const EffectSetup setup = setup_effects(*scene, request, reporter);
     if (setup.sagitta_error) {
         // The help bounds --sagitta by the mirror: refused whichever effects run.
         return Failure{ExitStatus::UsageError, *setup.sagitta_error};
     }
-
-    // Destroyed in reverse: renderer, then the table its objects point to, then the context.
-    auto context = make_context(request, reporter);
-    if (!context) {
-        return runtime(context.error());
+    if (auto failure = start_gl(session, request, reporter)) {
+        return *failure;
     }
-    auto fn = gl::Functions::load(**context);
-    if (!fn) {
-        return runtime(fn.error());
-    }
-    auto renderer = render::Renderer::create(**context, *fn, *scene);
-    if (!renderer) {
-        return runtime(renderer.error());
-    }
+    const gl::Functions* fn = session.fn.get();
+    render::Renderer* renderer = &*session.renderer;
     auto samples = gl::choose_samples(*fn, request.msaa_samples);
     if (!samples) {
         return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
     }
     if (request.verbose) {
-        reporter.note("context: " + gl::summary((*context)->describe()));
         reporter.note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
                       std::to_string(gl::max_samples(*fn)) + ")");
         reporter.note(depth_summary(*renderer, request.depth));

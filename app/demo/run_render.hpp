@@ -4,6 +4,7 @@
 
 #include "demo/command_line.hpp"
 #include "demo/failure.hpp"
+#include "demo/session.hpp"
 
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
@@ -19,11 +20,6 @@
 #include <vector>
 
 namespace demo {
-
-struct Reporter {
-    std::function<void(std::string_view)> progress; // "[2/4] mirror.png", multi-image runs only
-    std::function<void(std::string_view)> note;     // backend fallback, --verbose context and KHR_debug lines
-};
 
 struct RenderRun {
     std::vector<std::string> written_paths; // in the order written
@@ -49,10 +45,5 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
 // The output folder is checked first, before the scene is read. A run that
 // fails removes the folders it created while they are still empty.
 std::variant<RenderRun, Failure> run_render(const RenderRequest& request, const Reporter& reporter);
-
-// The offscreen context for a request: exactly --backend when given,
-// otherwise EGL, then OSMesa with a note. --verbose requests a debug context
-// whose KHR_debug messages go to reporter.note.
-frustum::Result<std::unique_ptr<gl::Context>> make_context(const RenderRequest& request, const Reporter& reporter);
 
 } // namespace demo

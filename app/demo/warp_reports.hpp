@@ -2,15 +2,18 @@
 // per-pixel references and print Markdown tables (docs/lens.md,
 // docs/non-affine.md):
 //
+// Each takes its rows of the option table (demo/options.hpp): its own,
+// the scene, size, context and budget options of render and --verbose; any
+// other is refused.
+//
 //   frustum-demo lens-report [--grids 4,8,16,32] [--supersampling K] [--runs N]
-//       [--lens-power P] [--scene FILE] [--camera NAME|INDEX] [--size WxH]
-//       [--backend egl|osmesa] [--depth D] [--out DIR]
+//       [--lens-power P] [the shared options]
 //     The tiled lens (paper §5.4) for each grid vs the texture-remap
 //     reference (eq. 34 per pixel): error and median frame time. Writes
 //     DIR/lens-<grid>.png, lens-diff-<grid>.png and lens-reference.png.
 //
 //   frustum-demo nonaffine-report [--edges 0,1,0.5,0.25,0.1] [--runs N] [--slit M] [--pivot M]
-//       [--scene FILE] [--camera NAME|INDEX] [--size WxH] [--backend B] [--depth D] [--out DIR]
+//       [the shared options]
 //     eq. 36 naive, culled, and culled + subdivided to each edge length
 //     (metres; 0 = no subdivision) vs the CPU ray cast. Writes
 //     DIR/nonaffine-naive.png, nonaffine-cull.png, nonaffine-<edge>m.png,

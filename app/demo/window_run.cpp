@@ -9,7 +9,6 @@
 #include <gl/offscreen_target.hpp>
 #include <render/camera.hpp>
 #include <render/renderer.hpp>
-#include <scene/load_gltf.hpp>
 #include <window/controls.hpp>
 #include <window/frame.hpp>
 #include <window/frame_clock.hpp>
@@ -25,58 +24,49 @@
 namespace demo {
 namespace {
 
-Failure runtime(std::string message) { return {ExitStatus::RuntimeFailure, std::move(message)}; }
 
-// Everything one frame loop needs, made once.
-struct Session {
-    scene::Scene scene;
-    int camera_index = -1;
-    // Destroyed in reverse: painter and renderer, then the table their
-    // objects point to, then the window with its context.
-    std::unique_ptr<gl::GlfwEglWindow> window;
-    std::unique_ptr<gl::Functions> fn;
-    std::optional<render::Renderer> renderer;
+// Everything one frame loop needs, made once: the session (demo/session.hpp)
+// with the window as its context, and the painter, which dies before them.
+struct WindowSession : Session {
+    gl::GlfwEglWindow* window = nullptr; // the session's context
     std::optional<window::FramePainter> painter;
     EffectSetup effects; // the effect options, with what they leave unset derived from the scene
 };
 
-std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest& request,
-                                                            const std::function<void(std::string_view)>& note) {
-    auto session = std::make_unique<Session>();
-    auto scene = scene::load_gltf(request.scene_path);
-    if (!scene) {
-        return runtime(scene.error());
+std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowRequest& request,
+                                                                  const std::function<void(std::string_view)>& note) {
+    auto session = std::make_unique<WindowSession>();
+    if (auto failure = load_session(*session, request, false)) {
+        return *failure;
     }
-    session->scene = std::move(*scene);
-    auto camera_index = render::find_camera(session->scene, request.camera);
-    if (!camera_index) {
-        return Failure{ExitStatus::UsageError, camera_index.error()};
-    }
-    session->camera_index = *camera_index;
-    session->effects = setup_effects(session->scene, request, Reporter{note, note});
+    const Reporter reporter{note, note};
+    session->effects = setup_effects(session->scene, request, reporter);
     gl::WindowOptions options;
-    options.title = window::window_title(request.effect, std::nullopt);
+    options.title = window::window_title(request.effects.front(), std::nullopt);
     options.width = request.width_px;
     options.height = request.height_px;
     options.vsync = !request.frames; // scripted runs go as fast as they can
-    auto window = gl::GlfwEglWindow::create(options);
-    if (!window) {
-        return runtime("cannot open a window: " + window.error() + "; use `frustum-demo render` for offscreen images");
+    options.context = context_options(request, note);
+    const auto open_window = [&]() -> frustum::Result<std::unique_ptr<gl::Context>> {
+        auto window = gl::GlfwEglWindow::create(options);
+        if (!window) {
+            return frustum::Error{"cannot open a window: " + window.error() +
+                                  "; use `frustum-demo render` for offscreen images"};
+        }
+        session->window = window->get();
+        return std::unique_ptr<gl::Context>(std::move(*window));
+    };
+    if (auto failure = start_gl(*session, request, reporter, open_window)) {
+        return *failure;
     }
-    session->window = std::move(*window);
-    auto fn = gl::Functions::load(*session->window);
-    if (!fn) {
-        return runtime(fn.error());
-    }
-    if (auto samples = gl::choose_samples(*fn, request.msaa_samples); !samples) {
+    auto samples = gl::choose_samples(*session->fn, request.msaa_samples);
+    if (!samples) {
         return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
     }
-    session->fn = std::make_unique<gl::Functions>(*fn);
-    auto renderer = render::Renderer::create(*session->window, *session->fn, session->scene);
-    if (!renderer) {
-        return runtime(renderer.error());
+    if (request.verbose) {
+        note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
+             std::to_string(gl::max_samples(*session->fn)) + ")");
     }
-    session->renderer.emplace(std::move(*renderer));
     auto painter = window::FramePainter::create(*session->fn);
     if (!painter) {
         return runtime(painter.error());
@@ -87,10 +77,11 @@ std::variant<std::unique_ptr<Session>, Failure> open_session(const WindowRequest
 
 window::ViewerState initial_state(const WindowRequest& request) {
     window::ViewerState state;
-    state.effect = request.effect;
+    state.effect = request.effects.front();
     state.tile_columns = request.tile_columns;
     state.tile_rows = request.tile_rows;
     state.mirror_method = request.mirror;
+    state.lens_power = request.lens_power; // --lens-power: the start; [ and ] change it
     state.show_help = request.help_overlay;
     state.show_inset = request.inset;
     state.msaa_samples = request.msaa_samples;
@@ -123,7 +114,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
     if (auto* failure = std::get_if<Failure>(&opened)) {
         return *failure;
     }
-    Session& s = *std::get<std::unique_ptr<Session>>(opened);
+    WindowSession& s = *std::get<std::unique_ptr<WindowSession>>(opened);
     const std::vector<int> attachments = window::mirror_attachments(s.scene);
     const window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
     window::Controls controls(window::control_scene(s.scene));

@@ -168,9 +168,9 @@ bool Controls::mirror_key(const gl::KeyPressed& press, MirrorPose& pose) const {
 std::pair<int, int> next_tiles(int columns, int rows, int step) {
     if (step > 0) {
         if (columns <= rows) {
-            columns = std::min(columns + 1, kMaxTiles);
+            columns = std::max(columns, std::min(columns + 1, kMaxTiles));
         } else {
-            rows = std::min(rows + 1, kMaxTiles);
+            rows = std::max(rows, std::min(rows + 1, kMaxTiles));
         }
     } else if (step < 0) {
         if (columns > rows) {

@@ -73,7 +73,8 @@ private:
 
 // The tile grid after '+' (step 1) or '-' (step -1): a column is added
 // when there are no more columns than rows, else a row (3x2 -> 3x3 -> 4x3),
-// and '-' undoes it; each count stays within 1..kMaxTiles.
+// and '-' undoes it; '+' adds up to kMaxTiles per direction and never
+// lowers a larger grid given with --tiles (at most demo::kMaxTileSide).
 std::pair<int, int> next_tiles(int columns, int rows, int step);
 
 // The lens power after ']' (step 1: times 1.25) or '[' (step -1: divided by

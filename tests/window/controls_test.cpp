@@ -148,6 +148,10 @@ TEST_CASE("+ and - grow and shrink the tile grid within 1..16") {
     CHECK(window::next_tiles(4, 3, -1) == std::pair<int, int>(3, 3));
     CHECK(window::next_tiles(3, 3, -1) == std::pair<int, int>(3, 2));
     CHECK(window::next_tiles(1, 1, -1) == std::pair<int, int>(1, 1));
+    // --tiles 20x2 (accepted by window as by render): '+' keeps the 20 columns, '-' removes one.
+    CHECK(window::next_tiles(20, 2, 1) == std::pair<int, int>(20, 3));
+    CHECK(window::next_tiles(20, 16, 1) == std::pair<int, int>(20, 16));
+    CHECK(window::next_tiles(20, 2, -1) == std::pair<int, int>(19, 2));
     CHECK(window::next_tiles(16, 16, 1) == std::pair<int, int>(16, 16));
     Rig rig;
     rig.send(character('=', true)); // '+' on a US keyboard

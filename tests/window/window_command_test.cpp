@@ -107,6 +107,30 @@ TEST_CASE("the window's screenshot matches the offscreen renderer for every effe
     }
 }
 
+// The effect options set where the window starts: --lens-power and --tiles
+// (the viewer's state, which the keys then change) as much as the others.
+TEST_CASE("the window starts from --lens-power and --tiles as render draws them") {
+    for (const std::vector<std::string>& options :
+         {std::vector<std::string>{"--effect", "lens", "--lens-power", "1.5"},
+          std::vector<std::string>{"--effect", "tiles", "--tiles", "20x2", "--tile-borders"}}) {
+        CAPTURE(options[1]);
+        TempDir dir;
+        const std::string shot = (dir / "window.png").string();
+        std::vector<std::string> window_options{"--size", "128x72", "--frames", "2", "--screenshot", shot};
+        window_options.insert(window_options.end(), options.begin(), options.end());
+        const auto child = run_window_under_xvfb(window_options);
+        if (!child) {
+            return;
+        }
+        REQUIRE_MESSAGE(child->exit_status == 0, child->err);
+        std::vector<std::string> render_args{"render", "--size", "128x72", "--out", (dir / "render").string()};
+        render_args.insert(render_args.end(), options.begin(), options.end());
+        const Child rendered = window_test::run(kDemo, render_args);
+        REQUIRE_MESSAGE(rendered.exit_status == 0, rendered.err);
+        check_similar(read(shot), read(dir / "render" / (options[1] + ".png")), options[1]);
+    }
+}
+
 TEST_CASE("the help overlay and the inset cover only their corners") {
     TempDir dir;
     const auto shot = [&](const std::string& file, std::vector<std::string> extra) {

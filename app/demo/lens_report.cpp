@@ -1,0 +1,105 @@
+#include "demo/warp_report_parts.hpp"
+
+#include <render/lens_pass.hpp>
+#include <reference/lens_reference.hpp>
+
+#include <sstream>
+
+namespace demo {
+
+std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, ReportSession& s, const Reporter& reporter) {
+    const RenderRequest& r = request.render;
+    WarpReport report;
+    const PngWriter write(r.out_dir, reporter, report.written_paths);
+    const int disc = s.scene.lens ? s.scene.lens->instance : -1;
+    auto lens = render::lens_on_near_plane(s.cameras->main.pair, s.scene.lens, r.lens_power);
+    if (!lens) {
+        return runtime(lens.error());
+    }
+    const render::PassContext ctx = s.pass();
+    render::LensDraw draw{s.cameras->main.pair, *lens, 1, disc};
+
+    int levels = 0;
+    auto reference_ms = s.median_ms(request.runs, [&]() -> frustum::Status {
+        auto drawn = render::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
+        if (!drawn) {
+            return frustum::Error{drawn.error()};
+        }
+        levels = *drawn;
+        return {};
+    });
+    if (!reference_ms) {
+        return runtime(reference_ms.error());
+    }
+    auto reference = s.read();
+    if (!reference) {
+        return runtime(reference.error());
+    }
+    if (auto status = write(*reference, "lens-reference.png"); !status) {
+        return runtime(status.error());
+    }
+    // How far the reference itself is from converged: the same at twice the supersampling.
+    std::string self_check = "-";
+    if (2 * request.supersampling <= 8) {
+        if (auto drawn = render::draw_lens_reference(ctx, *s.frame, draw, 2 * request.supersampling); !drawn) {
+            return runtime(drawn.error());
+        }
+        auto finer = s.read();
+        if (!finer) {
+            return runtime(finer.error());
+        }
+        const render::MirrorError e = picture_error(*reference, *finer, kWarpThresholdLsb);
+        self_check = fixed(e.mean_abs, 2) + " LSB mean, " + std::to_string(e.max_abs) + " max, " +
+                     fixed(100.0 * e.fraction_over, 2) + "% of the pixels over " + std::to_string(kWarpThresholdLsb) +
+                     " LSB";
+    }
+    auto plain_ms = s.median_ms(request.runs, [&]() -> frustum::Status {
+        s.frame->bind();
+        render::begin_frame(ctx);
+        render::SceneDraw scene{s.cameras->main.pair};
+        scene.skip_instance = disc;
+        render::draw_scene(ctx, scene);
+        return {};
+    });
+    if (!plain_ms) {
+        return runtime(plain_ms.error());
+    }
+
+    MarkdownTable table({"grid", "tiles", "mean error (LSB)", "max error (LSB)",
+                         "pixels > " + std::to_string(kWarpThresholdLsb) + " LSB",
+                         "frame (ms, median of " + std::to_string(request.runs) + ")"});
+    for (int grid : request.grids) {
+        reporter.progress("grid " + std::to_string(grid));
+        draw.grid = grid;
+        auto ms = s.median_ms(request.runs, [&] { return render::draw_lens_frame(ctx, *s.frame, draw); });
+        if (!ms) {
+            return runtime(ms.error());
+        }
+        auto tiled = s.read();
+        if (!tiled) {
+            return runtime(tiled.error());
+        }
+        table.row({std::to_string(grid) + " x " + std::to_string(grid), std::to_string(grid * grid),
+                   error_cells(picture_error(*tiled, *reference, kWarpThresholdLsb)), fixed(*ms, 2)});
+        const std::string suffix = std::to_string(grid) + ".png";
+        if (auto status = write(*tiled, "lens-" + suffix); !status) {
+            return runtime(status.error());
+        }
+        if (auto status = write(diff_picture(*tiled, *reference), "lens-diff-" + suffix); !status) {
+            return runtime(status.error());
+        }
+    }
+    std::ostringstream md;
+    md << "Lens: power " << fixed(lens->power, 2) << ", centre (" << fixed(lens->center_m.x * 1e3, 2) << ", "
+       << fixed(lens->center_m.y * 1e3, 2) << ") mm, radius " << fixed(lens->radius_m * 1e3, 2)
+       << " mm on the near plane; camera '" << s.cameras->main.name << "', " << r.width_px << "x" << r.height_px
+       << "; GL: " << s.context->describe().renderer << ".\n"
+       << "Reference: " << levels << " nested level(s) at " << request.supersampling << "x, "
+       << fixed(*reference_ms, 2) << " ms; against itself at " << 2 * request.supersampling << "x: " << self_check
+       << ". Plain frame (lens disc hidden): " << fixed(*plain_ms, 2) << " ms.\n\n"
+       << table.text();
+    report.markdown = md.str();
+    return report;
+}
+
+} // namespace demo

@@ -1,0 +1,65 @@
+// What every frustum-demo command draws with, opened the same way by
+// render, window and every report: the scene (within the --max-* budget)
+// -> the camera (--camera) -> the GL context (offscreen: make_context's one
+// fallback; the window: its own) -> the function table -> the renderer.
+// The command adds its own parts (the window's painter, a report's target).
+#pragma once
+
+#include "demo/failure.hpp"
+#include "demo/options.hpp"
+
+#include <frustum/result.hpp>
+#include <gl/context.hpp>
+#include <gl/functions.hpp>
+#include <render/camera.hpp>
+#include <render/renderer.hpp>
+#include <scene/scene.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <variant>
+
+namespace demo {
+
+struct Reporter {
+    std::function<void(std::string_view)> progress; // "[2/4] mirror.png", multi-image runs only
+    std::function<void(std::string_view)> note;     // backend fallback, --verbose context and KHR_debug lines
+};
+
+// Members die in reverse: the renderer, then the table its objects point
+// to, then the context; the scene outlives them all. A command's own
+// session derives from it, so its GL objects die before the context.
+struct Session {
+    scene::Scene scene;
+    int camera_index = -1;
+    std::optional<render::Cameras> cameras; // at --size (the window makes its own, per framebuffer size)
+    std::unique_ptr<gl::Context> context;
+    std::unique_ptr<gl::Functions> fn; // stable address: GL objects point to it
+    std::optional<render::Renderer> renderer;
+};
+
+// The scene and the camera: an unreadable scene is a runtime failure, an
+// unknown --camera a usage error. With `cameras_at_size`, also the cameras
+// for a --size frame.
+std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size);
+
+using ContextMaker = std::function<frustum::Result<std::unique_ptr<gl::Context>>()>;
+
+// The context (make_context() when `make` is empty), its functions and the
+// renderer of the session's scene; with --verbose a note names the context.
+std::optional<Failure> start_gl(Session& session, const Settings& settings, const Reporter& reporter,
+                                const ContextMaker& make = {});
+
+// The offscreen context: exactly --backend when given, otherwise EGL, then
+// OSMesa with a note (when both fail, the error holds both reasons); the
+// app's one fallback (gl::create_offscreen_context_with_fallback has no
+// note and serves the GL tests). --verbose requests a debug context whose
+// KHR_debug messages go to reporter.note.
+frustum::Result<std::unique_ptr<gl::Context>> make_context(const Settings& settings, const Reporter& reporter);
+
+// The context options --verbose asks for: a debug context, KHR_debug lines to `note`.
+gl::ContextOptions context_options(const Settings& settings, const std::function<void(std::string_view)>& note);
+
+} // namespace demo
