@@ -266,7 +266,8 @@ TEST_CASE("frustum.glsl matches the C++ library on the GPU (transform feedback, 
     // its own normalize and division) against the C++ library in float.
     // Measured over 200 cases (see the MESSAGE): corners, centre and eye
     // bit-identical, planes and crop <= 1e-6, the eq. 36 clip 6.4e-6 (the
-    // GPU divides by the denominators with its own reciprocal).
+    // GPU divides by the denominators with its own reciprocal), world from
+    // depth 4e-7.
     constexpr float kTolerance = 2e-5f;
     const char* names[kOutputs] = {"L", "R", "B", "T", "N", "F", "C1", "C2", "C3", "C4", "C5", "C6", "C7",
                                    "C8", "D", "O", "crop m0", "crop m1", "crop m2", "crop m3", "crop inv0",
