@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -41,8 +42,10 @@ frustum::Result<DepthCopy> copy_depth(const gl::Functions& fn, const gl::Offscre
     fn.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture->id(), 0);
     const GLenum status = fn.CheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        return frustum::Error{std::string(kApply) + ": the depth copy's framebuffer is incomplete (status 0x" +
-                              std::to_string(status) + ")"};
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(status));
+        return frustum::Error{std::string(kApply) + ": the depth copy's framebuffer is incomplete (status " + hex +
+                              ")"};
     }
     fn.BindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());
     fn.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer->id());

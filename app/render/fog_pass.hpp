@@ -29,7 +29,8 @@ struct FogOptions {
     float start_m = 0.0f;               // no fog closer than this to the eye
     // A counter-example for tests and the README: the reflection's depth
     // decoded with the reflected pair before its oblique near plane (what
-    // engines that keep only the projection they started from do).
+    // engines that keep only the projection they started from do). Meant
+    // for MirrorMethod::Oblique, whose crop that pair shares.
     bool decode_reflection_unclipped = false;
 };
 
