@@ -150,10 +150,10 @@ TEST_CASE("metres per depth step: the pair's prediction is what the GPU stores")
         const double measured = probe.measured_step_m(kDistanceM, *predicted, 16);
         MESSAGE(std::string(c.name) << " at " << kDistanceM << " m: predicted " << *predicted * 1000.0 << " mm, measured "
                        << measured * 1000.0 << " mm per step");
-        // The GPU computes z / w in float: where a float ulp of z / w is as
-        // coarse as the stored step (z / w near 1 in 24 bits; reversed-Z float
-        // at w >= 0.5) its rounding blurs the bin edges and the bisection
-        // reads them wide. Tolerance 25% on the mean of 16 bins. Measured
+        // The GPU computes clip z in float: where its rounding (about 2^-24
+        // of w) is as large as the stored step (z / w near 1 in 24 bits;
+        // reversed-Z, whose z is a difference of terms of size w) it blurs
+        // the bin edges and the bisection reads them wide. Tolerance 25% on the mean of 16 bins. Measured
         // (llvmpipe): oblique 24-bit +0.02%, oblique float -1.4%, un-clipped
         // 24-bit +12.8%, oblique reversed-Z float +12.9% (docs/depth-precision.md).
         CHECK(measured > 0.75 * *predicted);
