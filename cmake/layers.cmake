@@ -26,6 +26,7 @@ set(FRUSTUM_LAYERS
   "app/window:window render scene gl image frustum"
   "app/vectors:vectors text frustum"
   "app/explain:explain frustum"
+  "app/precision:precision render scene image frustum"
   "app/demo:demo window reference render scene gl image frustum"
   "app/web:web window render scene gl image frustum"
   "tests/math:frustum"
@@ -34,7 +35,7 @@ set(FRUSTUM_LAYERS
   "tests/scene:scene image frustum"
   "tests/fuzz:scene vectors frustum"
   "tests/robustness:scene vectors image frustum"
-  "tests/gl:render reference scene gl image frustum"
+  "tests/gl:render reference precision scene gl image frustum"
   "tests/bench:render reference scene gl image frustum"
   "tests/window:window demo render scene gl image frustum"
   "tests/web:image frustum"
@@ -51,7 +52,8 @@ set(FRUSTUM_LAYER_TARGETS
   "reference:frustum_reference"
   "window:frustum_window"
   "vectors:frustum_vectors_lib"
-  "demo:frustum_demo_cli")
+  "demo:frustum_demo_cli"
+  "precision:frustum_precision")
 
 # <target> sees "<layer>/..." as <folder>/... (PUBLIC: so do the targets
 # that link it). The root holds nothing else.

@@ -124,3 +124,24 @@ vec4 frustum_non_affine_clip(vec4 planes[6], vec3 p, float z_near, float z_far) 
     vec3 uvs = vec3(dot(planes[0], q), dot(planes[3], q), dot(planes[4], q)) / d;
     return vec4(2.0 * uvs.x - 1.0, 1.0 - 2.0 * uvs.y, z_near + uvs.z * (z_far - z_near), 1.0);
 }
+
+// Depth that decodes: the world point a depth-buffer texel stores, for any
+// pair and depth range. `depth` is the window depth the buffer holds, in
+// [0, 1] with glDepthRangef(0, 1); the clip z/w that produced it is
+// z_lo + depth (z_hi - z_lo) with z_lo, z_hi the smaller and larger of
+// (z_near, z_far): 2 depth - 1 for the [-1, 1] range (GL's default clip
+// control), depth itself for [0, 1] and reversed [1, 0] (GL_ZERO_TO_ONE).
+float frustum_clip_z_from_depth(float depth, float z_near, float z_far) {
+    float z_lo = min(z_near, z_far);
+    return z_lo + depth * (max(z_near, z_far) - z_lo);
+}
+
+// section 3.2 (the inverse takes clip points back to world): world =
+// M^-1 (x_ndc, y_ndc, z_clip, 1), divided by its w. `inverse_m` must be the
+// inverse of the matrix that wrote the depth, in the range it was written
+// with: for an oblique near plane that is the oblique pair's inverse, not
+// the inverse of the projection before the plane was swapped in.
+vec3 frustum_world_from_depth(mat4 inverse_m, vec2 ndc_xy, float depth, float z_near, float z_far) {
+    vec4 p = inverse_m * vec4(ndc_xy, frustum_clip_z_from_depth(depth, z_near, z_far), 1.0);
+    return p.xyz / p.w;
+}

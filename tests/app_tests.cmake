@@ -1,6 +1,6 @@
 # Suites that need the app layers. Each links whatever app libraries exist.
 set(_app_libs)
-foreach(lib frustum_reference frustum_render frustum_scene frustum_gl frustum_image frustum_vectors_lib frustum_window)
+foreach(lib frustum_reference frustum_render frustum_scene frustum_gl frustum_image frustum_vectors_lib frustum_window frustum_precision)
   if(TARGET ${lib})
     list(APPEND _app_libs ${lib})
   endif()

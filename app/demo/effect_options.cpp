@@ -146,6 +146,37 @@ std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) 
     return apply_depth(s.fit.pivot_m, "--pivot", value);
 }
 
+// ---- Fog (render/fog_pass.hpp): depth decoded with each pass's own pair ----
+
+std::optional<Failure> apply_fog(EffectSettings& s, const std::string&) {
+    if (!s.fog) {
+        s.fog = render::FogOptions{};
+    }
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_fog_density(EffectSettings& s, const std::string& value) {
+    const auto density = parse_number(value);
+    if (!density || !(*density > 0.0f && *density <= 1000.0f)) {
+        return usage("--fog-density must be a number in (0, 1000] per metre" + got(value));
+    }
+    apply_fog(s, value);
+    s.fog->density_per_m = *density;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_fog_color(EffectSettings& s, const std::string& value) {
+    const auto v = parse_numbers(value, 3);
+    if (!v || std::any_of(v->begin(), v->end(), [](float c) { return !(c >= 0.0f && c <= 1.0f); })) {
+        return usage("--fog-color must be r,g,b with each in [0, 1] (sRGB-encoded)" + got(value));
+    }
+    apply_fog(s, value);
+    s.fog->color = glm::vec3((*v)[0], (*v)[1], (*v)[2]);
+    return std::nullopt;
+}
+
+// ---- end of fog ----
+
 } // namespace
 
 const std::vector<EffectOption>& effect_options() {
@@ -194,6 +225,17 @@ const std::vector<EffectOption>& effect_options() {
          "nonaffine effect: where the slit planes meet the camera's side planes,\n"
          "(0, 1000] m, below the far distance (default: the model centre's depth)",
          apply_pivot, kRender | kWindow, "5"},
+        // ---- Fog (render/fog_pass.hpp) ----
+        {"--fog", nullptr,
+         "plain and mirror effects: distance fog from the depth buffer, the\n"
+         "reflection decoded with its own oblique pair (default: the sky's\n"
+         "colour, half fog one scene diagonal away)",
+         apply_fog},
+        {"--fog-density", "D", "fog per metre, (0, 1000] (implies --fog; default ln 2 / the scene's diagonal)",
+         apply_fog_density, kRender | kWindow, "0.05"},
+        {"--fog-color", "r,g,b", "the fog's sRGB colour, each in [0, 1] (implies --fog; default the sky)",
+         apply_fog_color, kRender | kWindow, "0.5,0.6,0.7"},
+        // ---- end of fog ----
     };
     return table;
 }

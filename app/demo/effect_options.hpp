@@ -11,6 +11,7 @@
 
 #include <render/curved_mirror.hpp>
 #include <render/effect.hpp>
+#include <render/fog_pass.hpp>
 #include <render/mirror_placement.hpp>
 #include <render/scene_fit.hpp>
 
@@ -46,6 +47,8 @@ struct EffectSettings {
     int lens_grid = 16;                  // --lens-grid
     float lens_power = 2.0f;             // --lens-power: p of eq. 34
     render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
+    // Fog (fog rows of effect_options.cpp): --fog, --fog-density, --fog-color.
+    std::optional<render::FogOptions> fog;
 };
 
 struct EffectOption {

@@ -54,6 +54,7 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
     options.tile_rows = settings.tile_rows;
     options.tile_borders = settings.tile_borders;
     options.fit = settings.fit;
+    options.fog = settings.fog;
     return setup;
 }
 

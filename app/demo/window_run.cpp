@@ -103,6 +103,7 @@ void apply_effect_settings(const EffectSetup& setup, window::Frame& frame, int w
     o.curved = setup.options.curved;
     o.fit = setup.options.fit;
     o.tile_borders = setup.options.tile_borders;
+    o.fog = setup.options.fog; // --fog (the plain and mirror effects)
     o.lens_grid = std::min(setup.options.lens_grid, std::min(width_px, height_px));
 }
 

@@ -27,8 +27,27 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
     SceneDraw draw{view.pair};
     draw.skip_instance = mirror_instance;
     draw_scene(ctx, draw);
-    target->resolve();
     return target;
+}
+
+// The reflection's fog: its depth decoded with the pair that wrote it, or
+// (the counter-example) with the reflected pair before the oblique near
+// plane, cropped alike.
+frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget& target, const ReflectionView& view,
+                               const gl::OffscreenTarget& frame, const MirrorDraw& draw, const FogDraw& fog) {
+    frustum::MatrixPair<float> decode = view.pair;
+    if (fog.decode_reflection_unclipped) {
+        auto unclipped = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(),
+                                         MirrorMethod::ReflectOnly, draw.bounds);
+        if (!unclipped) {
+            return frustum::Error{unclipped.error()};
+        }
+        if (!unclipped->has_value()) {
+            return frustum::Error{"render::draw_mirror_frame(): no unclipped reflection to decode the fog with"};
+        }
+        decode = (*unclipped)->pair;
+    }
+    return fog.pass->apply(ctx, target, decode, fog.params);
 }
 
 // The mirror surface: uv = (M_reflection world).xy / w * 0.5 + 0.5.
@@ -68,18 +87,29 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
         frame.bind();
         begin_frame(ctx);
         draw_scene(ctx, SceneDraw{draw.camera});
-        return {};
+        return draw.fog ? draw.fog->pass->apply(ctx, frame, draw.camera, draw.fog->params) : frustum::Status{};
     }
     const ReflectionView& view = **plan;
     auto reflection = render_reflection(ctx, view, surface);
     if (!reflection) {
         return frustum::Error{reflection.error()};
     }
+    if (draw.fog) {
+        if (auto status = fog_reflection(ctx, *reflection, view, frame, draw, *draw.fog); !status) {
+            return status;
+        }
+    }
+    reflection->resolve();
     frame.bind();
     begin_frame(ctx);
     SceneDraw main{draw.camera};
     main.skip_instance = surface;
     draw_scene(ctx, main);
+    if (draw.fog) { // before the surface: its colour, the reflection, is fogged already
+        if (auto status = draw.fog->pass->apply(ctx, frame, draw.camera, draw.fog->params); !status) {
+            return status;
+        }
+    }
     draw_mirror_surface(ctx, draw.camera, surface, reflection->color_texture(), view, draw.tint);
     return gl::check_error(ctx.fn, "render::draw_mirror_frame()");
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/effect.hpp"
+#include "render/fog_pass.hpp"
 #include "render/mirror_geometry.hpp"
 #include "render/pass_context.hpp"
 
@@ -14,6 +15,8 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+
 namespace render {
 
 struct MirrorDraw {
@@ -22,6 +25,9 @@ struct MirrorDraw {
     MirrorMethod method = MirrorMethod::Oblique;
     glm::vec3 tint{0.92f, 0.95f, 1.0f}; // times the reflection; (1, 1, 1) = a perfect mirror
     scene::Bounds bounds;              // for the Rectangle method's far plane
+    // Distance fog over the frame and, decoded with the reflection's own
+    // pair, over the reflection texture (fog_pass.hpp); unset: none.
+    std::optional<FogDraw> fog;
 };
 
 // Draws the whole frame into `frame` (left bound). Without a reflection (the

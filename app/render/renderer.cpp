@@ -32,8 +32,9 @@ FrustumLineStyle line_style(const scene::Bounds& bounds) {
 } // namespace
 
 Renderer::Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
-                   const scene::Scene& scene)
+                   FogPass fog_pass, const scene::Scene& scene)
     : context_(&context), fn_(&fn), gpu_scene_(std::move(gpu_scene)), programs_(std::move(programs)),
+      fog_pass_(std::move(fog_pass)),
       mirror_(scene.mirror), bounds_(scene.world_bounds), scene_mirror_(scene.mirror), lens_(scene.lens),
       object_geometry_(WorldGeometry::in_object_space(scene)) {
     for (const scene::Instance& instance : scene.instances) {
@@ -47,11 +48,15 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
     if (!programs) {
         return frustum::Error{programs.error()};
     }
+    auto fog_pass = FogPass::build(fn);
+    if (!fog_pass) {
+        return frustum::Error{fog_pass.error()};
+    }
     auto gpu_scene = GpuScene::upload(fn, scene);
     if (!gpu_scene) {
         return frustum::Error{gpu_scene.error()};
     }
-    return Renderer(context, fn, std::move(*gpu_scene), std::move(*programs), scene);
+    return Renderer(context, fn, std::move(*gpu_scene), std::move(*programs), std::move(*fog_pass), scene);
 }
 
 frustum::DepthRange Renderer::gpu_depth_range(DepthPath path) const {
@@ -128,6 +133,11 @@ frustum::Status Renderer::move_mirror(const glm::mat4& motion, const std::vector
 
 frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
                                const Cameras& cameras, const RenderOptions& options) const {
+    std::optional<FogDraw> fog; // the plain and mirror effects draw it; the others leave it out
+    if (options.fog) {
+        fog = FogDraw{&fog_pass_, fit_fog(*options.fog, bounds_, ctx.clear_color),
+                      options.fog->decode_reflection_unclipped};
+    }
     switch (effect) {
     case Effect::Lens: {
         auto lens = fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
@@ -164,14 +174,15 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         return {};
     case Effect::Mirror:
         if (mirror_) {
-            return draw_mirror_frame(
-                ctx, frame, MirrorDraw{cameras.main.pair, *mirror_, options.mirror_method, options.mirror_tint, bounds_});
+            return draw_mirror_frame(ctx, frame,
+                                     MirrorDraw{cameras.main.pair, *mirror_, options.mirror_method,
+                                                options.mirror_tint, bounds_, fog});
         }
         [[fallthrough]]; // no mirror: the plain frame
     case Effect::Plain:
         begin_frame(ctx);
         draw_scene(ctx, SceneDraw{cameras.main.pair});
-        return {};
+        return fog ? fog_pass_.apply(ctx, frame, cameras.main.pair, fog->params) : frustum::Status{};
     case Effect::Tiles:
         return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
                                 options.tile_borders);

@@ -8,6 +8,7 @@
 #include "render/curved_mirror.hpp"
 #include "render/depth_policy.hpp"
 #include "render/effect.hpp"
+#include "render/fog_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
@@ -46,6 +47,9 @@ struct RenderOptions {
                                                        // from the scene's bounds and the camera (scene_fit.hpp)
     bool tile_borders = false;                         // tiles effect: draw each tile's border
     Lighting lighting;
+    // Plain and mirror effects: distance fog decoded from depth (fog_pass.hpp);
+    // unset: none. The other effects are drawn without it.
+    std::optional<FogOptions> fog;
     // MSAA samples of render()'s frame (gl::choose_samples()): kAutomaticSamples
     // = 4 or the context's maximum, 1 = off. render_into() uses the target's.
     int msaa_samples = gl::kAutomaticSamples;
@@ -91,7 +95,7 @@ public:
 
 private:
     Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
-             const scene::Scene& scene);
+             FogPass fog_pass, const scene::Scene& scene);
 
     frustum::Status draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
                          const Cameras& cameras, const RenderOptions& options) const;
@@ -100,6 +104,7 @@ private:
     const gl::Functions* fn_;
     GpuScene gpu_scene_;
     Programs programs_;
+    FogPass fog_pass_;
     std::optional<scene::MirrorRect> mirror_;
     scene::Bounds bounds_;
     // Where the scene put the mirror and the instances (move_mirror() starts

@@ -19,7 +19,7 @@
 namespace {
 
 // One vec4 per vertex: what gl_VertexID asks for.
-constexpr int kOutputs = 26;
+constexpr int kOutputs = 27;
 constexpr const char* kTwinsVertex = R"glsl(
 uniform mat4 u_m;
 uniform mat4 u_inverse;
@@ -29,6 +29,7 @@ uniform vec4 u_rect;       // crop rectangle (x, y, width, height)
 uniform vec2 u_full;       // full image size
 uniform vec4 u_outward[6]; // non-affine planes, unit, outward
 uniform vec3 u_point;      // a point for eq. 36
+uniform vec3 u_ndc_depth;  // u_point through u_m: x, y / w and its window depth in [0, 1]
 
 out vec4 v_out;
 
@@ -50,8 +51,10 @@ void main() {
         v_out = frustum_crop_inverse(u_inverse, u_rect, u_full)[i - 20];       // 20..23: its inverse's columns
     } else if (i == 24) {
         v_out = frustum_non_affine_clip(u_outward, u_point, u_z_near, u_z_far);
-    } else {
+    } else if (i == 25) {
         v_out = vec4(frustum_non_affine_denominators(u_outward, u_point), 0.0);
+    } else {
+        v_out = vec4(frustum_world_from_depth(u_inverse, u_ndc_depth.xy, u_ndc_depth.z, u_z_near, u_z_far), 1.0);
     }
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
 }
@@ -220,6 +223,7 @@ std::vector<glm::vec4> expected(const Case& c) {
     REQUIRE(clip.has_value());
     out.push_back(*clip);
     out.push_back(glm::vec4(c.outward.denominators(c.point), 0.0f));
+    out.push_back(glm::vec4(c.point, 1.0f)); // frustum_world_from_depth() takes it back from its depth
     return out;
 }
 
@@ -262,11 +266,13 @@ TEST_CASE("frustum.glsl matches the C++ library on the GPU (transform feedback, 
     // its own normalize and division) against the C++ library in float.
     // Measured over 200 cases (see the MESSAGE): corners, centre and eye
     // bit-identical, planes and crop <= 1e-6, the eq. 36 clip 6.4e-6 (the
-    // GPU divides by the denominators with its own reciprocal).
+    // GPU divides by the denominators with its own reciprocal), world from
+    // depth 4e-7.
     constexpr float kTolerance = 2e-5f;
     const char* names[kOutputs] = {"L", "R", "B", "T", "N", "F", "C1", "C2", "C3", "C4", "C5", "C6", "C7",
                                    "C8", "D", "O", "crop m0", "crop m1", "crop m2", "crop m3", "crop inv0",
-                                   "crop inv1", "crop inv2", "crop inv3", "eq. 36 clip", "eq. 36 denominators"};
+                                   "crop inv1", "crop inv2", "crop inv3", "eq. 36 clip", "eq. 36 denominators",
+                                   "world from depth"};
     std::vector<float> worst(kOutputs, 0.0f);
     std::mt19937 rng(20240601u);
     for (int n = 0; n < 200; ++n) {
@@ -283,6 +289,10 @@ TEST_CASE("frustum.glsl matches the C++ library on the GPU (transform feedback, 
         }
         fn.Uniform4fv(program.uniform("u_outward"), 6, glm::value_ptr(outward[0]));
         fn.Uniform3f(program.uniform("u_point"), c.point.x, c.point.y, c.point.z);
+        const glm::vec4 clip = c.pair.matrix() * glm::vec4(c.point, 1.0f);
+        const float z_lo = std::min(frustum::clip_z_near<float>(c.pair.depth()), frustum::clip_z_far<float>(c.pair.depth()));
+        const float window = (clip.z / clip.w - z_lo) / std::abs(frustum::clip_z_span<float>(c.pair.depth()));
+        fn.Uniform3f(program.uniform("u_ndc_depth"), clip.x / clip.w, clip.y / clip.w, window);
         feedback.begin(GL_POINTS);
         fn.DrawArrays(GL_POINTS, 0, kOutputs);
         feedback.end();

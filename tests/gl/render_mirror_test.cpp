@@ -6,34 +6,6 @@
 #include <render/mirror_geometry.hpp>
 #include <render/scene_pass.hpp>
 
-namespace {
-
-// The reference: the scene geometry itself reflected in the mirror plane
-// (frustum::reflection_matrix as a model matrix, so the winding flips per
-// draw), drawn from the unchanged camera, with fragments in front of the
-// mirror plane discarded (they are reflections of what lies behind it).
-image::Image render_mirrored_geometry(const render_test::RenderEnvironment& r, const render::Cameras& cameras) {
-    const gl::Functions& fn = r.env->fn;
-    auto depth = render::DepthPolicy::apply(fn, *r.env->context, render::DepthPath::ClipControlWhenAvailable);
-    REQUIRE_MESSAGE(depth.ok(), depth.error());
-    auto target = gl::OffscreenTarget::create(fn, {render_test::kWidthPx, render_test::kHeightPx});
-    REQUIRE_MESSAGE(target.ok(), target.error());
-    const render::PassContext ctx = r.renderer->pass_context(*depth, render::Lighting{});
-    const scene::MirrorRect& mirror = *render_test::showcase().mirror;
-    const frustum::Plane<float> plane = render::mirror_plane(mirror);
-    render::begin_frame(ctx);
-    render::SceneDraw draw(cameras.main.pair);
-    draw.pre_model = frustum::reflection_matrix(plane);
-    draw.clip_plane = plane.flipped(); // keep what lies behind the mirror after reflection
-    draw.skip_instance = mirror.instance;
-    render::draw_scene(ctx, draw);
-    auto picture = target->read_rgba8();
-    REQUIRE_MESSAGE(picture.ok(), picture.error());
-    return std::move(*picture);
-}
-
-} // namespace
-
 TEST_SUITE("gl") {
 
 TEST_CASE("the mirror shows the mirrored scene") {
@@ -45,7 +17,7 @@ TEST_CASE("the mirror shows the mirrored scene") {
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     REQUIRE(render_test::count(mask) > 500); // the mirror is well in view
     const image::Image mirrored = r->render(render::Effect::Mirror, cameras, render_test::options());
-    const image::Image reference = render_mirrored_geometry(*r, cameras);
+    const image::Image reference = render_test::render_mirrored_geometry(*r, cameras);
     // Not a trivial match: the reflection shows the floor and the objects.
     CHECK(render_test::count_not_sky(mirrored, mask) > render_test::count(mask) / 3);
     // The reflection texture's texels are the screen's pixels (same pixel

@@ -9,7 +9,11 @@
 
 #include <image/compare.hpp>
 #include <image/image.hpp>
+#include <frustum/reflect.hpp>
+#include <gl/offscreen_target.hpp>
 #include <image/png.hpp>
+#include <render/mirror_geometry.hpp>
+#include <render/scene_pass.hpp>
 #include <render/camera.hpp>
 #include <render/renderer.hpp>
 #include <scene/load_gltf.hpp>
@@ -195,6 +199,42 @@ inline int count_red(const image::Image& picture, const Mask& mask) {
         }
     }
     return red;
+}
+
+// The mirror effect's reference: the scene geometry itself reflected in the
+// mirror plane (frustum::reflection_matrix as a model matrix, so the winding
+// flips per draw), drawn from the unchanged camera into a new target (left
+// bound), with fragments in front of the mirror plane discarded (they are
+// reflections of what lies behind it).
+inline gl::OffscreenTarget draw_mirrored_geometry(const RenderEnvironment& r, const render::Cameras& cameras,
+                                                  const render::DepthPolicy& depth) {
+    const gl::Functions& fn = r.env->fn;
+    auto target = gl::OffscreenTarget::create(fn, {kWidthPx, kHeightPx});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    const render::PassContext ctx = r.renderer->pass_context(depth, render::Lighting{});
+    const scene::MirrorRect& mirror = *showcase().mirror;
+    const frustum::Plane<float> plane = render::mirror_plane(mirror);
+    render::begin_frame(ctx);
+    render::SceneDraw draw(cameras.main.pair);
+    draw.pre_model = frustum::reflection_matrix(plane);
+    draw.clip_plane = plane.flipped(); // keep what lies behind the mirror after reflection
+    draw.skip_instance = mirror.instance;
+    render::draw_scene(ctx, draw);
+    return std::move(*target);
+}
+
+inline render::DepthPolicy apply_depth_policy(const RenderEnvironment& r,
+                                              render::DepthPath path = render::DepthPath::ClipControlWhenAvailable) {
+    auto depth = render::DepthPolicy::apply(r.env->fn, *r.env->context, path);
+    REQUIRE_MESSAGE(depth.ok(), depth.error());
+    return *depth;
+}
+
+inline image::Image render_mirrored_geometry(const RenderEnvironment& r, const render::Cameras& cameras) {
+    const gl::OffscreenTarget target = draw_mirrored_geometry(r, cameras, apply_depth_policy(r));
+    auto picture = target.read_rgba8();
+    REQUIRE_MESSAGE(picture.ok(), picture.error());
+    return std::move(*picture);
 }
 
 } // namespace render_test
