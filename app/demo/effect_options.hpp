@@ -10,6 +10,7 @@
 #include <render/effect.hpp>
 #include <render/mirror_placement.hpp>
 #include <render/scene_fit.hpp>
+#include <render/stereo.hpp>
 
 #include <optional>
 #include <string>
@@ -39,6 +40,10 @@ struct EffectSettings {
     int lens_grid = 16;                  // --lens-grid
     float lens_power = 2.0f;             // --lens-power: p of eq. 34
     render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
+    // Stereo (render/stereo.hpp): side-by-side eyes, each its own pair.
+    bool stereo = false;                       // --stereo
+    float ipd_m = render::kDefaultIpdM;        // --ipd-m
+    std::optional<float> convergence_m;        // --convergence-m; unset: render::default_convergence_m()
 };
 
 struct EffectOption {
