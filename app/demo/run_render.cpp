@@ -151,6 +151,11 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     }
 
     const std::optional<render::StereoRig> stereo = stereo_rig(request, cameras->main.pair, *scene);
+    if (stereo) { // the rig's bounds once, not once per effect
+        if (auto eyes = render::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
+            return runtime(eyes.error());
+        }
+    }
     if (stereo && request.verbose) {
         reporter.note("stereo: ipd " + render::number_text(stereo->ipd_m) + " m, convergence " +
                       render::number_text(stereo->convergence_m) + " m");
