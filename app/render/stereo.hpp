@@ -50,9 +50,10 @@ struct StereoEyes {
 //   screen corners S = O + convergence_m * corner(1 m)
 //   eye pair = screen_projection(S_ll, S_lr, S_ul, O -/+ ipd/2 right, near, far)
 // with the camera's near and far depths and depth range. ipd_m = 0 gives
-// the camera's pair back. Errors: the camera_frame() ones, ipd_m < 0 or
-// not finite, convergence_m not above the near depth, e.g.
-// "render::stereo_eyes(): convergence 0.05 m must be beyond the near plane (0.1 m)".
+// the camera's pair back (to float rounding). Errors: the camera_frame()
+// ones, ipd_m < 0 or not finite, convergence_m not between the near and
+// the far depth, e.g. "render::stereo_eyes(): convergence 0.05 m must be
+// beyond the near plane (0.1 m) and before the far plane (100 m)".
 frustum::Result<StereoEyes> stereo_eyes(const frustum::MatrixPair<float>& camera, const StereoRig& rig);
 
 // Cameras for each eye: main becomes that eye's pair (named "<main>
