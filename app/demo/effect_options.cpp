@@ -177,6 +177,30 @@ std::optional<Failure> apply_fog_color(EffectSettings& s, const std::string& val
 
 // ---- end of fog ----
 
+// ---- stereo (--stereo, --ipd-m, --convergence-m) ----
+
+constexpr float kMaxIpdM = 10.0f;
+
+std::optional<Failure> apply_stereo(EffectSettings& s, const std::string&) {
+    s.stereo = true;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_ipd(EffectSettings& s, const std::string& value) {
+    const auto ipd_m = parse_number(value);
+    if (!ipd_m || !(*ipd_m >= 0.0f && *ipd_m <= kMaxIpdM)) {
+        return usage("--ipd-m must be a distance in [0, 10] metres" + got(value));
+    }
+    s.ipd_m = *ipd_m;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_convergence(EffectSettings& s, const std::string& value) {
+    return apply_depth(s.convergence_m, "--convergence-m", value);
+}
+
+// ---- end of stereo ----
+
 } // namespace
 
 const std::vector<EffectOption>& effect_options() {
@@ -236,6 +260,17 @@ const std::vector<EffectOption>& effect_options() {
         {"--fog-color", "r,g,b", "the fog's sRGB colour, each in [0, 1] (implies --fog; default the sky)",
          apply_fog_color, kRender | kWindow, "0.5,0.6,0.7"},
         // ---- end of fog ----
+        // ---- stereo ----
+        {"--stereo", nullptr,
+         "left and right eyes side by side, each its own camera pair, with its\n"
+         "own mirror reflection, lens and tiles (each eye half the width)",
+         apply_stereo},
+        {"--ipd-m", "M", "stereo: interpupillary distance, [0, 10] m (default 0.064)", apply_ipd, kRender | kWindow, "0.1"},
+        {"--convergence-m", "M",
+         "stereo: depth of the zero-disparity plane, (0, 1000] m beyond the near\n"
+         "plane (default: the mirror's centre, else the model's centre)",
+         apply_convergence, kRender | kWindow, "4"},
+        // ---- end of stereo ----
     };
     return table;
 }

@@ -14,6 +14,7 @@
 #include <render/fog_pass.hpp>
 #include <render/mirror_placement.hpp>
 #include <render/scene_fit.hpp>
+#include <render/stereo.hpp>
 
 #include <optional>
 #include <string>
@@ -49,6 +50,10 @@ struct EffectSettings {
     render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
     // Fog (fog rows of effect_options.cpp): --fog, --fog-density, --fog-color.
     std::optional<render::FogOptions> fog;
+    // Stereo (render/stereo.hpp): side-by-side eyes, each its own pair.
+    bool stereo = false;                       // --stereo
+    float ipd_m = render::kDefaultIpdM;        // --ipd-m
+    std::optional<float> convergence_m;        // --convergence-m; unset: render::default_convergence_m()
 };
 
 struct EffectOption {

@@ -13,6 +13,7 @@
 #include <render/number_text.hpp>
 #include <render/renderer.hpp>
 #include <render/scene_fit.hpp>
+#include <render/stereo_render.hpp>
 #include <scene/load_gltf.hpp>
 
 #include <memory>
@@ -29,6 +30,19 @@ std::string depth_summary(const render::Renderer& renderer, render::DepthPath pa
 }
 
 } // namespace
+
+std::optional<render::StereoRig> stereo_rig(const EffectSettings& settings, const frustum::MatrixPair<float>& camera,
+                                            const scene::Scene& scene) {
+    if (!settings.stereo) {
+        return std::nullopt;
+    }
+    render::StereoRig rig;
+    rig.ipd_m = settings.ipd_m;
+    rig.convergence_m = settings.convergence_m
+                            ? *settings.convergence_m
+                            : render::default_convergence_m(camera, scene.mirror, scene.world_bounds);
+    return rig;
+}
 
 EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter) {
     if (auto placed = render::place_mirror(scene, settings.mirror_place)) {
@@ -61,6 +75,11 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
 namespace {
 
 std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
+    if (request.stereo && request.width_px % 2 != 0) {
+        return Failure{ExitStatus::UsageError, "--stereo needs an even width (two eyes side by side), got --size " +
+                                                   std::to_string(request.width_px) + "x" +
+                                                   std::to_string(request.height_px)};
+    }
     if (auto status = prepare_output_dir(request.out_dir); !status) {
         return runtime(status.error());
     }
@@ -95,6 +114,17 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
 
+    const std::optional<render::StereoRig> stereo = stereo_rig(request, cameras->main.pair, *scene);
+    if (stereo) { // the rig's bounds once, not once per effect
+        if (auto eyes = render::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
+            return runtime(eyes.error());
+        }
+    }
+    if (stereo && request.verbose) {
+        reporter.note("stereo: ipd " + render::number_text(stereo->ipd_m) + " m, convergence " +
+                      render::number_text(stereo->convergence_m) + " m");
+    }
+
     render::RenderOptions options = setup.options;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
@@ -119,7 +149,8 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     };
     for (render::Effect effect : request.effects) {
         const std::string name(render::to_string(effect));
-        auto picture = renderer->render(effect, *cameras, options);
+        auto picture = stereo ? render::render_stereo(*renderer, effect, *cameras, options, *stereo)
+                              : renderer->render(effect, *cameras, options);
         if (!picture) {
             const std::string failure = name + ": " + picture.error();
             if (!several) {

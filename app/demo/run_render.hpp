@@ -9,6 +9,7 @@
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
 #include <render/renderer.hpp>
+#include <render/stereo.hpp>
 #include <scene/scene.hpp>
 
 #include <functional>
@@ -41,6 +42,12 @@ struct EffectSetup {
     std::optional<std::string> sagitta_error; // an explicit --sagitta too large for this mirror
 };
 EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter);
+
+// The stereo rig --stereo, --ipd-m and --convergence-m ask for (the
+// convergence derived from the scene's mirror and bounds when unset, as
+// seen from `camera`); empty without --stereo.
+std::optional<render::StereoRig> stereo_rig(const EffectSettings& settings, const frustum::MatrixPair<float>& camera,
+                                            const scene::Scene& scene);
 
 // The output folder is checked first, before the scene is read. A run that
 // fails removes the folders it created while they are still empty.

@@ -20,7 +20,9 @@ std::optional<Failure> load_session(Session& session, const Settings& settings, 
     }
     session.camera_index = *camera_index;
     if (cameras_at_size) {
-        auto cameras = render::make_cameras(session.scene, session.camera_index, settings.width_px, settings.height_px);
+        // Stereo: the cameras are made for one eye's half of the image.
+        const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;
+        auto cameras = render::make_cameras(session.scene, session.camera_index, eye_width_px, settings.height_px);
         if (!cameras) {
             return runtime(cameras.error());
         }

@@ -147,8 +147,10 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
         if (size.width_px < 1 || size.height_px < 1) {
             continue;
         }
+        // Stereo: cameras, frame and options are one eye's, half the width.
+        const int eye_width_px = request.stereo ? std::max(1, size.width_px / 2) : size.width_px;
         if (!cameras) {
-            auto made = render::make_cameras(s.scene, s.camera_index, size.width_px, size.height_px);
+            auto made = render::make_cameras(s.scene, s.camera_index, eye_width_px, size.height_px);
             if (!made) {
                 return runtime(made.error());
             }
@@ -168,12 +170,13 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
             }
             applied_pose = state.mirror;
         }
-        auto frame = window::make_frame(state, *cameras, projection, s.scene.world_bounds, size.width_px,
+        auto frame = window::make_frame(state, *cameras, projection, s.scene.world_bounds, eye_width_px,
                                         size.height_px);
         if (!frame) {
             return runtime(frame.error());
         }
-        apply_effect_settings(s.effects, *frame, size.width_px, size.height_px);
+        apply_effect_settings(s.effects, *frame, eye_width_px, size.height_px);
+        frame->stereo = stereo_rig(request, frame->cameras.main.pair, s.scene);
         if (notice) {
             frame->text.insert(frame->text.begin(), *notice);
         }

@@ -10,6 +10,7 @@
 #include <render/camera.hpp>
 #include <render/effect.hpp>
 #include <render/renderer.hpp>
+#include <render/stereo.hpp>
 
 #include <optional>
 #include <string>
@@ -27,6 +28,10 @@ struct Frame {
     render::RenderOptions options; // width_px / height_px: the framebuffer
     bool inset = false;
     std::vector<std::string> text; // help panel lines; empty: none
+    // Set: cameras and options are one eye's (half the framebuffer's
+    // width); the painter draws each eye's pair (render/stereo.hpp) into
+    // its half, and no inset.
+    std::optional<render::StereoRig> stereo;
 };
 
 // The frame `state` asks for on a width_px x height_px framebuffer:

@@ -38,8 +38,39 @@ frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl
     return &*slot;
 }
 
+frustum::Status FramePainter::paint_stereo(const render::Renderer& renderer, const Frame& frame, int width_px,
+                                           int height_px) {
+    auto eyes = render::stereo_cameras(frame.cameras, *frame.stereo);
+    if (!eyes) {
+        return frustum::Error{eyes.error()};
+    }
+    const int eye_width_px = width_px / 2;
+    auto target = sized(eye_target_, eye_width_px, height_px, frame.options.msaa_samples);
+    if (!target) {
+        return frustum::Error{target.error()};
+    }
+    constexpr float kBlack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    gl::clear_window_rect(*fn_, {0, 0, width_px, height_px}, kBlack); // an odd width's last column
+    const std::pair<const render::Cameras*, int> sides[] = {{&eyes->left, 0}, {&eyes->right, eye_width_px}};
+    for (const auto& [cameras, x_px] : sides) {
+        if (auto status = renderer.render_into(frame.effect, *cameras, frame.options, **target); !status) {
+            return status;
+        }
+        if (auto status = gl::blit_to_window(*fn_, **target, {x_px, 0, eye_width_px, height_px}); !status) {
+            return status;
+        }
+    }
+    return {};
+}
+
 frustum::Status FramePainter::paint(const render::Renderer& renderer, const Frame& frame, int width_px,
                                     int height_px) {
+    if (frame.stereo) {
+        if (auto status = paint_stereo(renderer, frame, width_px, height_px); !status) {
+            return status;
+        }
+        return draw_text(renderer, frame, width_px, height_px);
+    }
     auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
     if (!main) {
         return frustum::Error{main.error()};
@@ -66,6 +97,11 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
             return status;
         }
     }
+    return draw_text(renderer, frame, width_px, height_px);
+}
+
+frustum::Status FramePainter::draw_text(const render::Renderer& renderer, const Frame& frame, int width_px,
+                                        int height_px) {
     if (!frame.text.empty()) {
         fn_->BindFramebuffer(GL_FRAMEBUFFER, 0);
         fn_->Viewport(0, 0, width_px, height_px);

@@ -2,7 +2,8 @@
 // renderer as `frustum-demo render`: the effect is rendered into an
 // offscreen target of the framebuffer's size (render::Renderer::render_into)
 // and blitted; the inset likewise at its own size into a corner; then the
-// help panel on top.
+// help panel on top. Stereo frames: each eye rendered and blitted into its
+// half (left eye left), no inset.
 #pragma once
 
 #include "window/frame.hpp"
@@ -32,10 +33,17 @@ private:
     frustum::Result<const gl::OffscreenTarget*> sized(std::optional<gl::OffscreenTarget>& slot, int width_px,
                                                       int height_px, int msaa_samples);
 
+    // frame.stereo: each eye into its half of framebuffer 0 (eye_target_ reused).
+    frustum::Status paint_stereo(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
+
+    // The help panel on top of framebuffer 0, when frame.text has lines.
+    frustum::Status draw_text(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
+
     const gl::Functions* fn_;
     TextOverlay text_;
     std::optional<gl::OffscreenTarget> frame_target_;
     std::optional<gl::OffscreenTarget> inset_target_;
+    std::optional<gl::OffscreenTarget> eye_target_;
 };
 
 } // namespace window

@@ -5,16 +5,6 @@ using namespace mtest;
 
 namespace {
 
-// Radical inverse in base b of i (Halton).
-double halton(int i, int base) {
-    double f = 1, r = 0;
-    for (; i > 0; i /= base) {
-        f /= base;
-        r += f * (i % base);
-    }
-    return r;
-}
-
 template <class T>
 MatrixPair<T> camera(DepthRange depth) {
     const auto p = frustum::perspective<T>(T(1), T(16.0 / 9), T(0.1), T(50), depth);
@@ -27,6 +17,15 @@ MatrixPair<T> camera(DepthRange depth) {
 } // namespace
 
 TEST_SUITE("math") {
+
+TEST_CASE("halton_jitter_px: Halton(2,3) minus 1/2") {
+    CHECK(frustum::halton_jitter_px<double>(0) == frustum::Vec2<double>(-0.5, -0.5));
+    CHECK(frustum::halton_jitter_px<double>(1) == frustum::Vec2<double>(0.0, 1.0 / 3 - 0.5));
+    CHECK(frustum::halton_jitter_px<double>(2).x == 0.25 - 0.5);
+    CHECK(frustum::halton_jitter_px<double>(2).y == doctest::Approx(2.0 / 3 - 0.5));
+    CHECK(frustum::halton_jitter_px<double>(3).x == 0.75 - 0.5);
+    CHECK(frustum::halton_jitter_px<double>(3).y == doctest::Approx(1.0 / 9 - 0.5));
+}
 
 TEST_CASE_TEMPLATE("jitter: rows 0 and 1 pick up 2 dx / W and 2 dy / H times row 3; inverse column 3 follows", T, float,
                    double) {
@@ -59,7 +58,7 @@ TEST_CASE_TEMPLATE("jitter: over 8 Halton(2,3) samples, pixel centres unproject 
     for (const DepthRange depth : all_depth_ranges) {
         const MatrixPair<T> pair = camera<T>(depth);
         for (int s = 1; s <= 8; ++s) {
-            const double dx = halton(s, 2) - 0.5, dy = halton(s, 3) - 0.5;
+            const double dx = frustum::halton_jitter_px<double>(s).x, dy = frustum::halton_jitter_px<double>(s).y;
             const auto jittered = frustum::jitter(pair, T(dx), T(dy), T(width), T(height));
             REQUIRE(jittered.ok());
             double worst_px = 0;

@@ -50,9 +50,11 @@ image::Image read(const std::filesystem::path& path) {
 }
 
 // The offscreen renderer's image of `effect` at width x height.
-image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size) {
-    const Child child = window_test::run(
-        kDemo, {"render", "--size", size, "--effect", effect, "--out", (dir / "render").string()});
+image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size,
+                              const std::vector<std::string>& more = {}) {
+    std::vector<std::string> args{"render", "--size", size, "--effect", effect, "--out", (dir / "render").string()};
+    args.insert(args.end(), more.begin(), more.end());
+    const Child child = window_test::run(kDemo, args);
     REQUIRE_MESSAGE(child.exit_status == 0, child.err);
     return read(dir / "render" / (effect + ".png"));
 }
@@ -129,6 +131,28 @@ TEST_CASE("the window starts from --lens-power and --tiles as render draws them"
         REQUIRE_MESSAGE(rendered.exit_status == 0, rendered.err);
         check_similar(read(shot), read(dir / "render" / (options[1] + ".png")), options[1]);
     }
+}
+
+TEST_CASE("--stereo: the window's two eyes match render --stereo") {
+    // Each eye its own camera and mirror, side by side; a wide base so the
+    // two halves differ visibly.
+    TempDir dir;
+    const std::string shot = (dir / "window.png").string();
+    const std::vector<std::string> stereo{"--stereo", "--ipd-m", "0.5"};
+    std::vector<std::string> options{"--size", "256x72", "--effect", "mirror", "--frames", "3", "--screenshot", shot};
+    options.insert(options.end(), stereo.begin(), stereo.end());
+    const auto child = run_window_under_xvfb(options);
+    if (!child) {
+        return;
+    }
+    REQUIRE_MESSAGE(child->exit_status == 0, child->err);
+    const image::Image window = read(shot);
+    REQUIRE(window.width == 256);
+    check_similar(window, render_offscreen(dir, "mirror", "256x72", stereo), "stereo mirror");
+    // The halves are two different eyes, not one picture twice.
+    const auto halves = image::compare(crop(window, 0, 0, 128, 72), crop(window, 128, 0, 256, 72), kTolerance);
+    REQUIRE_MESSAGE(halves.ok(), halves.error());
+    CHECK(halves->fraction_over() > 0.05);
 }
 
 TEST_CASE("the help overlay and the inset cover only their corners") {
@@ -238,7 +262,7 @@ TEST_CASE("render and window share every effect option, with the same messages")
     CHECK(names.size() >= 14);
     for (const std::string& name : names) {
         CAPTURE(name);
-        if (name == "--tile-borders" || name == "--fog") {
+        if (name == "--tile-borders" || name == "--fog" || name == "--stereo") {
             continue; // flags: no value to refuse
         }
         const Child r = window_test::run(kDemo, {"render", name, "bogus!"});

@@ -43,4 +43,23 @@ namespace frustum {
 template <class T>
 Result<MatrixPair<T>> jitter(const MatrixPair<T>& pair, T dx_px, T dy_px, T width_px, T height_px);
 
+// The radical inverse of `index` (>= 0) in `base` (>= 2): the Halton
+// sequence's coordinate, in [0, 1).
+inline double radical_inverse(int index, int base) {
+    double scale = 1, value = 0;
+    for (; index > 0; index /= base) {
+        scale /= base;
+        value += scale * (index % base);
+    }
+    return value;
+}
+
+// The usual TAA offsets: Halton(2,3) sample `index` minus 1/2, in pixels,
+// each in [-1/2, 1/2). TAA cycles through indices 1..8 (or 1..16); index 0
+// is the pixel's corner (-1/2, -1/2).
+template <class T>
+Vec2<T> halton_jitter_px(int index) {
+    return Vec2<T>(T(radical_inverse(index, 2) - 0.5), T(radical_inverse(index, 3) - 0.5));
+}
+
 } // namespace frustum
