@@ -145,6 +145,29 @@ std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) 
     return apply_depth(s.fit.pivot_m, "--pivot", value);
 }
 
+// ---- portal and recursion effects (docs/portals.md) ----
+
+std::optional<Failure> apply_recursion_depth(EffectSettings& s, const std::string& value) {
+    const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, render::kMaxRecursionDepth);
+    if (!depth) {
+        return usage("--recursion-depth must be a whole number in 0.." + std::to_string(render::kMaxRecursionDepth) +
+                     got(value));
+    }
+    s.recursion_depth = *depth;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_recursion_links(EffectSettings& s, const std::string& value) {
+    const auto set = render::parse_link_set(value);
+    if (!set) {
+        return usage("unknown recursion links '" + value + "' (expected mirrors or portals)");
+    }
+    s.recursion_links = *set;
+    return std::nullopt;
+}
+
+// ---- end of portal and recursion effects ----
+
 } // namespace
 
 const std::vector<EffectOption>& effect_options() {
@@ -193,6 +216,16 @@ const std::vector<EffectOption>& effect_options() {
          "nonaffine effect: where the slit planes meet the camera's side planes,\n"
          "(0, 1000] m, below the far distance (default: the model centre's depth)",
          apply_pivot},
+        // ---- portal and recursion effects (docs/portals.md) ----
+        {"--recursion-depth", "N",
+         "recursion effect: links passed through, 0..8 (default 4; 0 = the plain\n"
+         "frame with the mirrors' or portal's own colours)",
+         apply_recursion_depth},
+        {"--recursion-links", "L",
+         "recursion effect: mirrors (two facing mirrors beside the model, default)\n"
+         "| portals (a portal whose exit faces its entry)",
+         apply_recursion_links},
+        // ---- end of portal and recursion effects ----
     };
     return table;
 }

@@ -10,6 +10,8 @@
 #include <render/effect.hpp>
 #include <render/mirror_placement.hpp>
 #include <render/scene_fit.hpp>
+#include <render/view_links.hpp>
+#include <render/view_tree.hpp>
 
 #include <optional>
 #include <string>
@@ -39,6 +41,8 @@ struct EffectSettings {
     int lens_grid = 16;                  // --lens-grid
     float lens_power = 2.0f;             // --lens-power: p of eq. 34
     render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
+    int recursion_depth = 4;             // --recursion-depth
+    render::LinkSet recursion_links = render::LinkSet::Mirrors; // --recursion-links
 };
 
 struct EffectOption {

@@ -31,9 +31,10 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
     return target;
 }
 
-// The mirror surface: uv = (M_reflection world).xy / w * 0.5 + 0.5.
-void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float>& camera, int mirror_instance,
-                         const gl::Texture& reflection, const ReflectionView& view, const glm::vec3& tint) {
+} // namespace
+
+void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<float>& camera, int mirror_instance,
+                             const gl::Texture& reflection, const glm::mat4& texture_matrix, const glm::vec3& tint) {
     const gl::Functions& fn = ctx.fn;
     const MirrorCompositeProgram& p = ctx.programs.mirror_composite;
     const scene::Instance& instance = ctx.scene.instances()[static_cast<std::size_t>(mirror_instance)];
@@ -41,7 +42,7 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
     fn.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(ctx.depth.to_gpu(camera).matrix()));
     fn.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(instance.world));
     // Rows 0, 1 and 3 (x, y, w) do not depend on the depth range: no conversion.
-    fn.UniformMatrix4fv(p.reflection_matrix, 1, GL_FALSE, glm::value_ptr(view.pair.matrix()));
+    fn.UniformMatrix4fv(p.reflection_matrix, 1, GL_FALSE, glm::value_ptr(texture_matrix));
     fn.Uniform3f(p.tint, tint.r, tint.g, tint.b);
     fn.ActiveTexture(GL_TEXTURE0);
     fn.BindTexture(GL_TEXTURE_2D, reflection.id());
@@ -55,8 +56,6 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
 }
-
-} // namespace
 
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
     auto plan = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(), draw.method, draw.bounds);
@@ -80,7 +79,7 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
     SceneDraw main{draw.camera};
     main.skip_instance = surface;
     draw_scene(ctx, main);
-    draw_mirror_surface(ctx, draw.camera, surface, reflection->color_texture(), view, draw.tint);
+    draw_reflection_surface(ctx, draw.camera, surface, reflection->color_texture(), view.pair.matrix(), draw.tint);
     return gl::check_error(ctx.fn, "render::draw_mirror_frame()");
 }
 
