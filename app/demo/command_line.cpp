@@ -202,7 +202,7 @@ std::string help_text() {
            "  --camera NAME|INDEX camera by name (glTF camera, else its node) or index;\n"
            "                      default \"main\", else camera 0, else one framing the scene\n"
            "  --effect E          plain | mirror | tiles | frustum | curved | lens | nonaffine |\n"
-           "                      all (default all)\n"
+           "                      portal | recursion | all (default all)\n"
            "  --size WxH          image size in pixels, 1..8192 each (default 640x360)\n"
            "  --backend B         egl | osmesa (default: egl, falling back to osmesa with a note)\n"
            "  --depth D           zero_to_one: [0, 1] clip depth via clip control when the\n"
