@@ -201,6 +201,29 @@ std::optional<Failure> apply_convergence(EffectSettings& s, const std::string& v
 
 // ---- end of stereo ----
 
+// ---- portal and recursion effects (docs/portals.md) ----
+
+std::optional<Failure> apply_recursion_depth(EffectSettings& s, const std::string& value) {
+    const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, render::kMaxRecursionDepth);
+    if (!depth) {
+        return usage("--recursion-depth must be a whole number in 0.." + std::to_string(render::kMaxRecursionDepth) +
+                     got(value));
+    }
+    s.recursion_depth = *depth;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_recursion_links(EffectSettings& s, const std::string& value) {
+    const auto set = render::parse_link_set(value);
+    if (!set) {
+        return usage("unknown recursion links '" + value + "' (expected mirrors or portals)");
+    }
+    s.recursion_links = *set;
+    return std::nullopt;
+}
+
+// ---- end of portal and recursion effects ----
+
 } // namespace
 
 const std::vector<EffectOption>& effect_options() {
@@ -271,6 +294,16 @@ const std::vector<EffectOption>& effect_options() {
          "plane (default: the mirror's centre, else the model's centre)",
          apply_convergence, kRender | kWindow, "4"},
         // ---- end of stereo ----
+        // ---- portal and recursion effects (docs/portals.md) ----
+        {"--recursion-depth", "N",
+         "recursion effect: links passed through, 0..8 (default 4; 0 = the plain\n"
+         "frame with the mirrors' or portal's own colours)",
+         apply_recursion_depth, kRender | kWindow, "2"},
+        {"--recursion-links", "L",
+         "recursion effect: mirrors (two facing mirrors beside the model, default)\n"
+         "| portals (a portal whose exit faces its entry)",
+         apply_recursion_links, kRender | kWindow, "portals"},
+        // ---- end of portal and recursion effects ----
     };
     return table;
 }

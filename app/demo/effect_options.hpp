@@ -15,6 +15,8 @@
 #include <render/mirror_placement.hpp>
 #include <render/scene_fit.hpp>
 #include <render/stereo.hpp>
+#include <render/view_links.hpp>
+#include <render/view_tree.hpp>
 
 #include <optional>
 #include <string>
@@ -54,6 +56,8 @@ struct EffectSettings {
     bool stereo = false;                       // --stereo
     float ipd_m = render::kDefaultIpdM;        // --ipd-m
     std::optional<float> convergence_m;        // --convergence-m; unset: render::default_convergence_m()
+    int recursion_depth = 4;             // --recursion-depth
+    render::LinkSet recursion_links = render::LinkSet::Mirrors; // --recursion-links
 };
 
 struct EffectOption {

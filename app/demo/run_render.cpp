@@ -67,6 +67,8 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
     options.tile_columns = settings.tile_columns;
     options.tile_rows = settings.tile_rows;
     options.tile_borders = settings.tile_borders;
+    options.recursion_depth = settings.recursion_depth;
+    options.recursion_links = settings.recursion_links;
     options.fit = settings.fit;
     options.fog = settings.fog;
     return setup;

@@ -11,6 +11,8 @@ std::string_view to_string(Effect effect) {
     case Effect::Curved: return "curved";
     case Effect::Lens: return "lens";
     case Effect::NonAffine: return "nonaffine";
+    case Effect::Portal: return "portal";
+    case Effect::Recursion: return "recursion";
     }
     return "?";
 }

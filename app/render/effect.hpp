@@ -15,12 +15,16 @@ enum class Effect {
     Curved,  // a convex cap in place of the planar mirror, reflected patch by patch (paper §4.3)
     Lens,      // a magnifier at the scene's lens spot, one lens frustum per tile (paper §5.4)
     NonAffine, // a crossed-slits frustum of six planes, eq. 36 per vertex (paper §6)
+    // Portals and recursion (docs/portals.md):
+    Portal,    // a portal pair beside the model: through the entry, the scene from the exit
+    Recursion, // two facing mirrors (or a portal facing itself) seen recursively, --depth levels
 };
 
 inline constexpr Effect kAllEffects[] = {Effect::Plain, Effect::Mirror, Effect::Tiles, Effect::Frustum,
-                                        Effect::Curved, Effect::Lens,   Effect::NonAffine};
+                                        Effect::Curved, Effect::Lens,   Effect::NonAffine,
+                                        Effect::Portal, Effect::Recursion};
 
-// "plain", "mirror", "tiles", "frustum", "curved", "lens", "nonaffine".
+// "plain", "mirror", "tiles", "frustum", "curved", "lens", "nonaffine", "portal", "recursion".
 std::string_view to_string(Effect effect);
 // Inverse of to_string(Effect); empty for any other text.
 std::optional<Effect> parse_effect(std::string_view text);

@@ -113,6 +113,8 @@ frustum::Result<GpuPrimitive> upload_primitive(const gl::Functions& fn, const sc
             high = glm::max(high, position);
         }
         out.center = 0.5f * (low + high);
+        out.low = low;
+        out.high = high;
     }
 
     fn.BindVertexArray(out.vertex_array.id());

@@ -35,6 +35,7 @@ struct GpuPrimitive {
     bool has_colors = false;
     bool has_texcoords = false;
     glm::vec3 center{0.0f}; // of the positions' bounding box, object space: sorts blended primitives
+    glm::vec3 low{0.0f}, high{0.0f}; // that bounding box (object space): frustum culling
 };
 
 using GpuMesh = std::vector<GpuPrimitive>;

@@ -50,9 +50,10 @@ frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget
     return fog.pass->apply(ctx, target, decode, fog.params);
 }
 
-// The mirror surface: uv = (M_reflection world).xy / w * 0.5 + 0.5.
-void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float>& camera, int mirror_instance,
-                         const gl::Texture& reflection, const ReflectionView& view, const glm::vec3& tint) {
+} // namespace
+
+void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<float>& camera, int mirror_instance,
+                             const gl::Texture& reflection, const glm::mat4& texture_matrix, const glm::vec3& tint) {
     const gl::Functions& fn = ctx.fn;
     const MirrorCompositeProgram& p = ctx.programs.mirror_composite;
     const scene::Instance& instance = ctx.scene.instances()[static_cast<std::size_t>(mirror_instance)];
@@ -60,7 +61,7 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
     p.set_view_projection(ctx.depth.to_gpu(camera).matrix());
     p.set_model(instance.world);
     // Rows 0, 1 and 3 (x, y, w) do not depend on the depth range: no conversion.
-    p.set_reflection_matrix(view.pair.matrix());
+    p.set_reflection_matrix(texture_matrix);
     p.set_tint(tint);
     fn.ActiveTexture(GL_TEXTURE0);
     fn.BindTexture(GL_TEXTURE_2D, reflection.id());
@@ -74,8 +75,6 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
 }
-
-} // namespace
 
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
     auto plan = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(), draw.method, draw.bounds);
@@ -110,7 +109,7 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
             return status;
         }
     }
-    draw_mirror_surface(ctx, draw.camera, surface, reflection->color_texture(), view, draw.tint);
+    draw_reflection_surface(ctx, draw.camera, surface, reflection->color_texture(), view.pair.matrix(), draw.tint);
     return gl::check_error(ctx.fn, "render::draw_mirror_frame()");
 }
 

@@ -35,4 +35,13 @@ struct MirrorDraw {
 // the plain scene and the surface shows its own material.
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw);
 
+// Draws instance `mirror_instance` of ctx.scene with `camera`, its colour
+// looked up in `reflection` at uv = (texture_matrix world).xy / w * 0.5 + 0.5
+// times `tint` (mirror_composite shaders). texture_matrix is the pair the
+// texture was rendered with; on the surface it must map world to clip x, y
+// and w as the camera (cropped to the texture's rectangle) does: a
+// reflection or a portal view of the surface's own plane does.
+void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<float>& camera, int mirror_instance,
+                             const gl::Texture& reflection, const glm::mat4& texture_matrix, const glm::vec3& tint);
+
 } // namespace render

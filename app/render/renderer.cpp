@@ -5,6 +5,7 @@
 #include "render/lens_pass.hpp"
 #include "render/mirror_motion.hpp"
 #include "render/mirror_pass.hpp"
+#include "render/recursion_pass.hpp"
 #include "render/scene_pass.hpp"
 #include "render/tile_pass.hpp"
 
@@ -32,11 +33,11 @@ FrustumLineStyle line_style(const scene::Bounds& bounds) {
 } // namespace
 
 Renderer::Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
-                   FogPass fog_pass, const scene::Scene& scene)
+                   FogPass fog_pass, const scene::Scene& scene, std::vector<LinkGroup> link_groups)
     : context_(&context), fn_(&fn), gpu_scene_(std::move(gpu_scene)), programs_(std::move(programs)),
       fog_pass_(std::move(fog_pass)),
       mirror_(scene.mirror), bounds_(scene.world_bounds), scene_mirror_(scene.mirror), lens_(scene.lens),
-      object_geometry_(WorldGeometry::in_object_space(scene)) {
+      link_groups_(std::move(link_groups)), object_geometry_(WorldGeometry::in_object_space(scene)) {
     for (const scene::Instance& instance : scene.instances) {
         scene_worlds_.push_back(instance.world);
     }
@@ -56,7 +57,43 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
     if (!gpu_scene) {
         return frustum::Error{gpu_scene.error()};
     }
-    return Renderer(context, fn, std::move(*gpu_scene), std::move(*programs), std::move(*fog_pass), scene);
+    // The quads of the portal pair, the facing mirrors and the facing
+    // portal; link_group() places them for each frame's camera.
+    std::vector<LinkGroup> groups;
+    for (int mirrors : {0, 2, 0}) {
+        std::vector<ViewLink> links(static_cast<std::size_t>(mirrors ? mirrors : 1));
+        for (ViewLink& link : links) {
+            link.kind = mirrors ? ViewLink::Kind::Mirror : ViewLink::Kind::Portal;
+        }
+        auto quads = GpuScene::upload(fn, link_scene(links));
+        if (!quads) {
+            return frustum::Error{quads.error()};
+        }
+        groups.push_back(LinkGroup{std::move(links), std::move(*quads)});
+    }
+    return Renderer(context, fn, std::move(*gpu_scene), std::move(*programs), std::move(*fog_pass), scene,
+                    std::move(groups));
+}
+
+frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, LinkSet set,
+                                                                 const frustum::MatrixPair<float>& camera) const {
+    const bool portal = effect == Effect::Portal;
+    LinkGroup& group = link_groups_[portal ? 0 : set == LinkSet::Mirrors ? 1 : 2];
+    auto placed = portal ? place_portal_pair(camera, bounds_) : place_facing_links(camera, bounds_, set);
+    if (!placed) {
+        return frustum::Error{placed.error()};
+    }
+    for (std::size_t i = 0; i < placed->size(); ++i) {
+        ViewLink& link = (*placed)[i];
+        link.surface_instance = group.links[i].surface_instance;
+        link.exit_instance = group.links[i].exit_instance;
+        group.quads.set_instance_world(static_cast<std::size_t>(link.surface_instance), link_world(link, false));
+        if (link.exit_instance >= 0) {
+            group.quads.set_instance_world(static_cast<std::size_t>(link.exit_instance), link_world(link, true));
+        }
+    }
+    group.links = std::move(*placed);
+    return &group;
 }
 
 frustum::DepthRange Renderer::gpu_depth_range(DepthPath path) const {
@@ -183,6 +220,21 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         begin_frame(ctx);
         draw_scene(ctx, SceneDraw{cameras.main.pair});
         return fog ? fog_pass_.apply(ctx, frame, cameras.main.pair, fog->params) : frustum::Status{};
+    case Effect::Portal:
+    case Effect::Recursion: {
+        auto group = link_group(effect, options.recursion_links, cameras.main.pair);
+        if (!group) {
+            return frustum::Error{group.error()};
+        }
+        const LinkGroup& g = **group;
+        const int depth = effect == Effect::Portal ? 1 : options.recursion_depth;
+        auto nodes = plan_view_tree(cameras.main.pair, g.links,
+                                    ViewTreeRequest{depth, frame.width(), frame.height(), ViewBounds::Tight});
+        if (!nodes) {
+            return frustum::Error{nodes.error()};
+        }
+        return draw_recursion_frame(ctx, frame, RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint});
+    }
     case Effect::Tiles:
         return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
                                 options.tile_borders);

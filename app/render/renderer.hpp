@@ -14,6 +14,7 @@
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
 #include "render/scene_fit.hpp"
+#include "render/view_links.hpp"
 #include "render/world_geometry.hpp"
 
 #include <frustum/result.hpp>
@@ -46,6 +47,8 @@ struct RenderOptions {
     EffectFit fit;                                     // slit, pivot, lens centre and radius; unset: derived
                                                        // from the scene's bounds and the camera (scene_fit.hpp)
     bool tile_borders = false;                         // tiles effect: draw each tile's border
+    int recursion_depth = 4;                           // recursion effect: links passed through, 0..8
+    LinkSet recursion_links = LinkSet::Mirrors;        // recursion effect: facing mirrors or a portal
     Lighting lighting;
     // Plain and mirror effects: distance fog decoded from depth (fog_pass.hpp);
     // unset: none. The other effects are drawn without it.
@@ -94,8 +97,15 @@ public:
     PassContext pass_context(const DepthPolicy& depth, const Lighting& lighting) const;
 
 private:
+    // Portal and recursion effects: the links beside the model and their
+    // quads on the GPU (view_links.hpp), one group per effect / LinkSet.
+    struct LinkGroup {
+        std::vector<ViewLink> links;
+        GpuScene quads;
+    };
+
     Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
-             FogPass fog_pass, const scene::Scene& scene);
+             FogPass fog_pass, const scene::Scene& scene, std::vector<LinkGroup> link_groups);
 
     frustum::Status draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
                          const Cameras& cameras, const RenderOptions& options) const;
@@ -113,6 +123,11 @@ private:
     std::vector<glm::mat4> scene_worlds_;
     std::vector<int> moved_instances_;
     std::optional<scene::LensSpot> lens_; // lens effect
+    // [0] portal pair, [1] facing mirrors, [2] facing portal. Mutable: the
+    // links follow each frame's camera (placed by link_group()).
+    mutable std::vector<LinkGroup> link_groups_;
+    frustum::Result<const LinkGroup*> link_group(Effect effect, LinkSet set,
+                                                 const frustum::MatrixPair<float>& camera) const;
     WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame
 };
 

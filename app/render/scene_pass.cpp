@@ -3,6 +3,8 @@
 #include "render/alpha_order.hpp"
 #include "render/face_state.hpp"
 
+#include <frustum/culling.hpp>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -58,6 +60,20 @@ struct DrawItem {
     float depth = 0.0f; // view_depth() of its centre: BLEND only
 };
 
+// The world box around the primitive's object-space box placed by `model`.
+frustum::Aabb<float> world_box(const glm::mat4& model, const GpuPrimitive& primitive) {
+    frustum::Aabb<float> box;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 local((corner & 1) ? primitive.high.x : primitive.low.x,
+                              (corner & 2) ? primitive.high.y : primitive.low.y,
+                              (corner & 4) ? primitive.high.z : primitive.low.z);
+        const glm::vec3 world(model * glm::vec4(local, 1.0f));
+        box.min = corner == 0 ? world : glm::min(box.min, world);
+        box.max = corner == 0 ? world : glm::max(box.max, world);
+    }
+    return box;
+}
+
 } // namespace
 
 void set_frame_state(const PassContext& ctx) {
@@ -93,10 +109,21 @@ void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
 
     std::vector<DrawItem> items;
     for (std::size_t i = 0; i < instances.size(); ++i) {
-        if (static_cast<int>(i) == draw.skip_instance) {
+        if (static_cast<int>(i) == draw.skip_instance ||
+            std::find(draw.skip_more.begin(), draw.skip_more.end(), static_cast<int>(i)) != draw.skip_more.end()) {
             continue;
         }
         for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instances[i].mesh)]) {
+            if (draw.cull && frustum::classify(*draw.cull, world_box(model_of(i), primitive)) ==
+                                 frustum::Containment::Outside) {
+                if (draw.counts) {
+                    ++draw.counts->culled;
+                }
+                continue;
+            }
+            if (draw.counts) {
+                ++draw.counts->drawn;
+            }
             DrawItem item{i, &primitive, alpha_group(ctx.scene.material(primitive.material).alpha_mode)};
             if (item.group == AlphaGroup::Blend) {
                 item.depth = view_depth(draw.camera, glm::vec3(model_of(i) * glm::vec4(primitive.center, 1.0f)));

@@ -6,10 +6,12 @@
 
 #include <frustum/matrix_pair.hpp>
 #include <frustum/plane.hpp>
+#include <frustum/queries.hpp>
 
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace render {
 
@@ -25,6 +27,12 @@ void clear_frame(const PassContext& ctx);
 // set_frame_state() then clear_frame().
 void begin_frame(const PassContext& ctx);
 
+// Primitives drawn and culled by draw_scene() calls.
+struct DrawCounts {
+    long drawn = 0;
+    long culled = 0;
+};
+
 struct SceneDraw {
     explicit SceneDraw(const frustum::MatrixPair<float>& camera_pair) : camera(camera_pair) {}
 
@@ -39,6 +47,13 @@ struct SceneDraw {
     // are discarded (the CLIP_PLANE program variant).
     std::optional<frustum::Plane<float>> clip_plane;
     int skip_instance = -1; // e.g. the mirror surface in its own reflection
+    std::vector<int> skip_more; // further instances not drawn (a recursion's link surfaces)
+    // Primitives whose world bounding box (the object-space box's eight
+    // corners after the model) is Outside these planes are not drawn
+    // (frustum::classify; a mirror or portal view's culling pair).
+    std::optional<frustum::FrustumPlanes<float>> cull;
+    // When set, counts what was drawn and culled (adds to it).
+    DrawCounts* counts = nullptr;
 };
 
 void draw_scene(const PassContext& ctx, const SceneDraw& draw);

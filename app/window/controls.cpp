@@ -117,6 +117,8 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
         state.mirror = MirrorPose{};
     } else if (c == 'O' && !press.repeat) {
         state.mirror_method = next_method(state.mirror_method);
+    } else if (c == ',' || c == '.') {
+        state.recursion_depth = std::clamp(state.recursion_depth + (c == ',' ? -1 : 1), 0, render::kMaxRecursionDepth);
     } else if (c == '[' || c == ']') {
         state.lens_power = next_lens_power(state.lens_power, c == '[' ? -1 : 1);
     } else if (c == '=' || c == '+' || c == '-') {

@@ -8,6 +8,7 @@
 #include <frustum/matrix_pair.hpp>
 #include <gl/window_input.hpp>
 #include <render/effect.hpp>
+#include <render/view_tree.hpp>
 #include <scene/scene.hpp>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,7 @@ struct ViewerState {
     int tile_columns = 3;
     int tile_rows = 2;
     float lens_power = 2.0f; // lens effect; > 1 magnifies
+    int recursion_depth = 4; // recursion effect: levels, 0..render::kMaxRecursionDepth (keys , .)
     bool show_help = false;
     bool show_inset = false; // the frustum view in a corner
     int msaa_samples = 0;    // gl::choose_samples(): 0 = 4 or the context's maximum, 1 = off

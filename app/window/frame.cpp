@@ -31,6 +31,7 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     frame.options.tile_columns = std::min(state.tile_columns, width_px);
     frame.options.tile_rows = std::min(state.tile_rows, height_px);
     frame.options.lens_power = state.lens_power;
+    frame.options.recursion_depth = state.recursion_depth;
     frame.options.msaa_samples = state.msaa_samples;
     frame.inset = state.show_inset;
     if (state.show_help) {

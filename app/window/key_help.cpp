@@ -36,6 +36,7 @@ std::vector<KeyHelp> key_help() {
         {"O", "mirror camera: oblique, rectangle, reflect_only"},
         {"+ -", "more / fewer tiles"},
         {"[ ]", "lens power down / up (lens effect)"},
+        {", .", "recursion depth down / up, 0..8 (recursion effect)"},
         {"F", "frustum view inset on / off"},
         {"H", "this help on / off"},
         {"Esc", "quit"},
@@ -47,7 +48,7 @@ std::vector<std::string> help_lines(const ViewerState& state) {
     lines.push_back("effect " + std::string(render::to_string(state.effect)) + "   tiles " +
                     std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows) + "   mirror camera " +
                     std::string(render::to_string(state.mirror_method)) + "   lens power " +
-                    power_text(state.lens_power) +
+                    power_text(state.lens_power) + "   depth " + std::to_string(state.recursion_depth) +
                     (state.orbit ? "   camera: orbit" : "   camera: scene"));
     lines.emplace_back();
     for (const KeyHelp& entry : key_help()) {

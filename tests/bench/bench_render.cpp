@@ -719,14 +719,12 @@ std::string report(const Collector& col, const PairedResults& paired, const std:
         }
         md << ".)\n";
     }
-    md << "\n| tiles | frustum::lens_tiles CPU us | per tile us | render::lens_frame_tiles CPU us (+ far-plane refit) "
-          "|\n|---|---|---|---|\n";
+    md << "\n| tiles | frustum::lens_tiles CPU us | per tile us |\n|---|---|---|\n";
     for (int n : kLensTileCounts) {
         const std::string nn = std::to_string(n) + "x" + std::to_string(n);
         const double us = 1000.0 * col.ms("cpu/lens_tiles/" + nn);
         md << "| " << nn << " | " << C::fixed(us, 1) << col.cv("cpu/lens_tiles/" + nn) << " | "
-           << C::fixed(us / (n * n), 2) << " | " << C::fixed(1000.0 * col.ms("cpu/lens_frame_tiles/" + nn), 1)
-           << col.cv("cpu/lens_frame_tiles/" + nn) << " |\n";
+           << C::fixed(us / (n * n), 2) << " |\n";
     }
     md << "\n### CPU: one frame's matrix-pair updates (camera + mirror + crop + 4x4 tiles = 19 pairs)\n\n";
     const double a = col.ms("cpu/frame_updates/analytic"), g = col.ms("cpu/frame_updates/glm_inverse");

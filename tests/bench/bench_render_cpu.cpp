@@ -143,16 +143,6 @@ void register_cpu_benchmarks() {
                                          }
                                      })
             ->Unit(benchmark::kMicrosecond);
-        // What the renderer computes per frame: lens_tiles + a refitted far plane per tile.
-        benchmark::RegisterBenchmark(("cpu/lens_frame_tiles/" + nn).c_str(),
-                                     [n](benchmark::State& s) {
-                                         const render::LensDraw draw = lens_draw(n);
-                                         for (auto _ : s) {
-                                             auto tiles = render::lens_frame_tiles(draw, kWidthPx, kHeightPx);
-                                             benchmark::DoNotOptimize(tiles);
-                                         }
-                                     })
-            ->Unit(benchmark::kMicrosecond);
     }
 }
 

@@ -7,8 +7,8 @@ namespace bench_render {
 inline constexpr int kLensTileCounts[] = {4, 8, 16, 32}; // N x N lens tiles
 inline constexpr int kCropTileCounts[] = {1, 2, 4, 8, 16, 32}; // N x N crop tiles
 
-// Registers "cpu/frame_updates/{analytic,glm_inverse}", "cpu/lens_tiles/NxN"
-// (frustum::lens_tiles) and "cpu/lens_frame_tiles/NxN" (render::lens_frame_tiles).
+// Registers "cpu/frame_updates/{analytic,glm_inverse}" and "cpu/lens_tiles/NxN"
+// (frustum::lens_tiles, all the lens effect computes per frame).
 void register_cpu_benchmarks();
 
 } // namespace bench_render

@@ -178,6 +178,23 @@ TEST_CASE("[ and ] change the lens power by 1.25 within [0.25, 8]") {
     CHECK(frame->options.lens_power == doctest::Approx(1.6f));
 }
 
+TEST_CASE(", and . change the recursion depth within 0..8") {
+    Rig rig;
+    rig.send(character('.'));
+    CHECK(rig.state.recursion_depth == 5);
+    for (int i = 0; i < 10; ++i) {
+        rig.send(character(','));
+    }
+    CHECK(rig.state.recursion_depth == 0);
+    for (int i = 0; i < 12; ++i) {
+        rig.send(character('.'));
+    }
+    CHECK(rig.state.recursion_depth == 8);
+    const auto frame = window::make_frame(rig.state, rig.cameras, {}, scene::Bounds{}, 256, 144);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    CHECK(frame->options.recursion_depth == 8);
+}
+
 TEST_CASE("the help lists every effect, and docs/window.md lists every key") {
     const std::vector<std::string> lines = window::help_lines(window::ViewerState{});
     std::string all;

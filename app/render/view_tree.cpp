@@ -1,0 +1,157 @@
+#include "render/view_tree.hpp"
+
+#include <frustum/mirror.hpp>
+#include <frustum/portal.hpp>
+#include <frustum/queries.hpp>
+#include <frustum/screen_rect.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace render {
+namespace {
+
+// The smallest whole-pixel rectangle holding `r` (floor / ceil, inside the image).
+std::optional<frustum::CropRect<float>> whole_pixels(const frustum::CropRect<float>& r) {
+    const float x0 = std::max(0.0f, std::floor(r.x)), y0 = std::max(0.0f, std::floor(r.y));
+    const float x1 = std::min(r.full_width, std::ceil(r.x + r.width));
+    const float y1 = std::min(r.full_height, std::ceil(r.y + r.height));
+    if (!(x1 > x0 && y1 > y0)) {
+        return std::nullopt;
+    }
+    return frustum::CropRect<float>{x0, y0, x1 - x0, y1 - y0, r.full_width, r.full_height};
+}
+
+// The node's eye is strictly on the plane's positive side (a perspective eye only).
+bool eye_in_front(const frustum::MatrixPair<float>& pair, const frustum::Plane<float>& plane) {
+    const glm::vec4 eye = frustum::key_points(pair).eye;
+    if (!(std::abs(eye.w) > 0.0f)) {
+        return false;
+    }
+    return glm::dot(plane.abcd, eye / eye.w) > 0.0f;
+}
+
+struct Planner {
+    const std::vector<ViewLink>& links;
+    const ViewTreeRequest& request;
+    std::vector<ViewNode> nodes;
+    std::vector<frustum::CropRect<float>> visible; // per node: its tight rectangle
+
+    frustum::Status visit(int index) {
+        if (nodes[static_cast<std::size_t>(index)].level >= request.depth) {
+            return {};
+        }
+        for (std::size_t li = 0; li < links.size(); ++li) {
+            const ViewNode& node = nodes[static_cast<std::size_t>(index)];
+            const ViewLink& link = links[li];
+            if (link.kind == ViewLink::Kind::Mirror && static_cast<int>(li) == node.link) {
+                continue;
+            }
+            const frustum::Plane<float> entry_plane = frustum::frame_plane(link.entry);
+            if (!eye_in_front(node.full, entry_plane)) {
+                continue;
+            }
+            auto seen = frustum::screen_rect(node.full, link.quad(), static_cast<float>(request.width_px),
+                                             static_cast<float>(request.height_px));
+            if (!seen) {
+                return frustum::Error{seen.error()};
+            }
+            if (!*seen) {
+                continue;
+            }
+            const auto pixels = whole_pixels(**seen);
+            const auto rect = pixels ? frustum::intersect(*pixels, visible[static_cast<std::size_t>(index)])
+                                     : std::nullopt;
+            if (!rect) {
+                continue;
+            }
+            if (auto status = add_child(index, static_cast<int>(li), *rect); !status) {
+                return status;
+            }
+            if (auto status = visit(static_cast<int>(nodes.size()) - 1); !status) {
+                return status;
+            }
+        }
+        return {};
+    }
+
+    frustum::Status add_child(int parent, int link_index, const frustum::CropRect<float>& rect) {
+        const ViewNode& node = nodes[static_cast<std::size_t>(parent)];
+        const ViewLink& link = links[static_cast<std::size_t>(link_index)];
+        const bool mirror = link.kind == ViewLink::Kind::Mirror;
+        const frustum::Plane<float> plane = link.near_plane();
+        auto culling = mirror ? frustum::culling_pair(node.unclipped, plane, rect)
+                              : frustum::culling_pair(node.unclipped, link.entry, link.exit, rect);
+        auto full = mirror ? frustum::mirror(node.unclipped, plane)
+                           : frustum::portal(node.unclipped, link.entry, link.exit);
+        if (!culling || !full) {
+            return frustum::Error{"render::plan_view_tree(): level " + std::to_string(node.level + 1) + ": " +
+                                  (!culling ? culling.error() : full.error())};
+        }
+        auto unclipped = frustum::uncrop(culling->pair, rect);
+        auto cropped = frustum::crop(*full, rect);
+        auto surface = frustum::crop(node.unclipped, rect);
+        if (!unclipped || !cropped || !surface) {
+            return frustum::Error{"render::plan_view_tree(): " +
+                                  (!unclipped ? unclipped.error() : !cropped ? cropped.error() : surface.error())};
+        }
+        ViewNode child(*full);
+        child.parent = parent;
+        child.link = link_index;
+        child.level = node.level + 1;
+        child.unclipped = *unclipped;
+        if (request.bounds == ViewBounds::Tight) {
+            child.rect = rect;
+            child.render = *cropped;
+            child.cull = culling->planes;
+            child.surface_matrix = surface->matrix();
+        } else {
+            child.rect = visible.front();
+            child.render = *unclipped;
+            child.clip_plane = plane;
+            child.surface_matrix = node.unclipped.matrix();
+        }
+        nodes.push_back(child);
+        visible.push_back(rect);
+        return {};
+    }
+};
+
+} // namespace
+
+frustum::Result<std::vector<ViewNode>> plan_view_tree(const frustum::MatrixPair<float>& camera,
+                                                      const std::vector<ViewLink>& links,
+                                                      const ViewTreeRequest& request) {
+    if (request.depth < 0 || request.depth > kMaxRecursionDepth) {
+        return frustum::Error{"render::plan_view_tree(): depth " + std::to_string(request.depth) +
+                              " must be in 0..8"};
+    }
+    if (request.width_px < 1 || request.height_px < 1) {
+        return frustum::Error{"render::plan_view_tree(): image " + std::to_string(request.width_px) + "x" +
+                              std::to_string(request.height_px) + " must be at least 1x1 pixels"};
+    }
+    const float w = static_cast<float>(request.width_px), h = static_cast<float>(request.height_px);
+    ViewNode root(camera);
+    root.rect = {0.0f, 0.0f, w, h, w, h};
+    if (request.bounds == ViewBounds::Tight) {
+        root.cull = frustum::planes(camera);
+    }
+    Planner planner{links, request, {root}, {root.rect}};
+    if (auto status = planner.visit(0); !status) {
+        return frustum::Error{status.error()};
+    }
+    return std::move(planner.nodes);
+}
+
+std::vector<int> children_of(const std::vector<ViewNode>& nodes, int index) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        if (nodes[i].parent == index) {
+            out.push_back(static_cast<int>(i));
+        }
+    }
+    return out;
+}
+
+} // namespace render

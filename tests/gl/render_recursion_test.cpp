@@ -1,0 +1,357 @@
+// The portal and recursion effects (docs/portals.md) against independent
+// references, on a small scene with nothing between the camera and the
+// mirrors or the portal: a portal view equals a direct render from the
+// virtual camera; recursion level k of two facing mirrors equals the scene
+// reflected k times; nothing behind a mirror or an exit portal shows.
+#include "render_test_support.hpp"
+
+#include <frustum/projection.hpp>
+#include <frustum/reflect.hpp>
+#include <frustum/rigid.hpp>
+#include <gl/offscreen_target.hpp>
+#include <render/recursion_pass.hpp>
+#include <render/scene_pass.hpp>
+#include <render/view_links.hpp>
+#include <render/view_tree.hpp>
+
+namespace {
+
+constexpr int kW = 192, kH = 108;
+constexpr glm::vec4 kMarkerColor{1.0f, 0.0f, 0.0f, 1.0f}; // unlit: pure red in the image
+
+void add_box(scene::Scene& s, const glm::vec3& center, float half_m, const glm::vec4& color, bool unlit = false) {
+    scene::Material material;
+    material.base_color_factor = color;
+    material.unlit = unlit;
+    s.materials.push_back(material);
+    scene::Primitive box;
+    for (int i = 0; i < 8; ++i) {
+        box.positions.push_back(center + half_m * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
+    }
+    box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+    box.material = static_cast<int>(s.materials.size()) - 1;
+    s.meshes.push_back(scene::Mesh{"box", {box}});
+    scene::Instance instance;
+    instance.mesh = static_cast<int>(s.meshes.size()) - 1;
+    s.instances.push_back(instance);
+}
+
+// Three boxes about the origin; the bounds are theirs (the markers added by
+// the tests lie outside them and do not move the links).
+scene::Scene small_scene() {
+    scene::Scene s;
+    add_box(s, {0.0f, 0.0f, 0.0f}, 0.3f, {0.2f, 0.5f, 0.9f, 1.0f});
+    add_box(s, {0.5f, -0.2f, -0.8f}, 0.2f, {0.2f, 0.8f, 0.3f, 1.0f});
+    add_box(s, {-0.6f, 0.25f, -1.2f}, 0.25f, {0.95f, 0.7f, 0.1f, 1.0f});
+    s.world_bounds = {{-0.85f, -0.4f, -1.45f}, {0.7f, 0.55f, 0.3f}};
+    return s;
+}
+
+// From (0.3, 0.4, 4) looking down -z, 45 degrees, far 200 m: nothing of
+// the corridor the links make is beyond the far plane, so the tilted far
+// plane of an oblique frustum (eq. 20-22) clips nothing either.
+frustum::MatrixPair<float> test_camera() {
+    auto projection = frustum::perspective<float>(glm::radians(45.0f), float(kW) / float(kH), 0.1f, 200.0f,
+                                                  frustum::DepthRange::ZeroToOne);
+    REQUIRE(projection.ok());
+    const auto view = frustum::RigidTransform<float>::from_rotation_translation(glm::mat3(1.0f),
+                                                                                -glm::vec3(0.3f, 0.4f, 4.0f));
+    return frustum::compose(*projection, view);
+}
+
+struct Setup {
+    std::unique_ptr<render_test::RenderEnvironment> r;
+    render::Cameras cameras;
+    std::optional<render::DepthPolicy> depth;
+};
+
+std::optional<Setup> make_setup(const scene::Scene& s) {
+    auto r = render_test::make_any_renderer(s);
+    if (!r) {
+        return std::nullopt;
+    }
+    auto cameras = render::make_cameras(s, -1, kW, kH);
+    REQUIRE_MESSAGE(cameras.ok(), cameras.error());
+    cameras->main.pair = test_camera();
+    auto depth = render::DepthPolicy::apply(r->env->fn, *r->env->context, render::DepthPath::ClipControlWhenAvailable);
+    REQUIRE_MESSAGE(depth.ok(), depth.error());
+    return Setup{std::move(r), std::move(*cameras), std::move(*depth)};
+}
+
+image::Image read(const gl::OffscreenTarget& target) {
+    auto picture = target.read_rgba8();
+    REQUIRE_MESSAGE(picture.ok(), picture.error());
+    return std::move(*picture);
+}
+
+// The recursion frame through `links` at `depth`, tint 1.
+image::Image recursion_frame(const Setup& s, const std::vector<render::ViewLink>& links, const render::GpuScene& quads,
+                             const std::vector<render::ViewNode>& nodes) {
+    const gl::Functions& fn = s.r->env->fn;
+    auto frame = gl::OffscreenTarget::create(fn, {kW, kH});
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    const render::PassContext ctx = s.r->renderer->pass_context(*s.depth, render::Lighting{});
+    const auto status = render::draw_recursion_frame(ctx, *frame, render::RecursionDraw{nodes, links, quads, glm::vec3(1.0f)});
+    REQUIRE_MESSAGE(status.ok(), status.error());
+    return read(*frame);
+}
+
+// Pixels whose centre lies inside every polygon (projected with `camera`)
+// by at least `margin_px`: the region a chain of links covers on screen.
+render_test::Mask polygon_mask(const frustum::MatrixPair<float>& camera,
+                               const std::vector<std::vector<glm::vec3>>& polygons, float margin_px) {
+    std::vector<std::vector<glm::vec2>> screen;
+    for (const auto& polygon : polygons) {
+        std::vector<glm::vec2> p;
+        for (const glm::vec3& corner : polygon) {
+            const glm::vec4 clip = camera.matrix() * glm::vec4(corner, 1.0f);
+            REQUIRE(clip.w > 0.0f);
+            p.emplace_back((clip.x / clip.w * 0.5f + 0.5f) * kW, (clip.y / clip.w * 0.5f + 0.5f) * kH);
+        }
+        screen.push_back(p);
+    }
+    render_test::Mask mask(static_cast<std::size_t>(kW * kH), false);
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const glm::vec2 c(x + 0.5f, (kH - 1 - y) + 0.5f); // image rows are top to bottom
+            bool inside = true;
+            for (const auto& p : screen) {
+                // Signed distances to the edges, one orientation for all (convex).
+                float lowest = 1e9f, highest = -1e9f;
+                for (std::size_t i = 0; i < p.size(); ++i) {
+                    const glm::vec2 a = p[i], b = p[(i + 1) % p.size()];
+                    const glm::vec2 e = b - a;
+                    const float d = (e.x * (c.y - a.y) - e.y * (c.x - a.x)) / glm::length(e);
+                    lowest = std::min(lowest, d);
+                    highest = std::max(highest, d);
+                }
+                inside = inside && (lowest >= margin_px || highest <= -margin_px);
+            }
+            mask[static_cast<std::size_t>(y * kW + x)] = inside;
+        }
+    }
+    return mask;
+}
+
+// Draws the scene and the link quads (less `skip`) with camera and model
+// transform into a full-size target.
+image::Image direct(const Setup& s, const render::GpuScene& quads, const frustum::MatrixPair<float>& camera,
+                    const glm::mat4& pre_model, std::optional<frustum::Plane<float>> clip, int skip,
+                    bool with_quads = true) {
+    const gl::Functions& fn = s.r->env->fn;
+    auto target = gl::OffscreenTarget::create(fn, {kW, kH});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    const render::PassContext ctx = s.r->renderer->pass_context(*s.depth, render::Lighting{});
+    const render::PassContext link_ctx{ctx.fn, ctx.api, ctx.programs, quads, ctx.depth, ctx.lighting};
+    render::begin_frame(ctx);
+    render::SceneDraw draw(camera);
+    draw.pre_model = pre_model;
+    draw.clip_plane = clip;
+    render::draw_scene(ctx, draw);
+    draw.skip_instance = skip;
+    if (with_quads) {
+        render::draw_scene(link_ctx, draw);
+    }
+    return read(*target);
+}
+
+int count_color(const image::Image& picture, const render_test::Mask* mask, const glm::vec4& color) {
+    int n = 0;
+    for (int y = 0; y < picture.height; ++y) {
+        for (int x = 0; x < picture.width; ++x) {
+            const image::Rgba p = image::pixel_at(picture, x, y);
+            const bool in = !mask || (*mask)[static_cast<std::size_t>(y * picture.width + x)];
+            n += in && std::abs(p[0] - 255 * color.r) <= 8 && std::abs(p[1] - 255 * color.g) <= 8 &&
+                 std::abs(p[2] - 255 * color.b) <= 8;
+        }
+    }
+    return n;
+}
+
+void check_same(const image::Image& a, const image::Image& b, const render_test::Mask& mask, const std::string& what,
+                int min_pixels) {
+    const auto d = render_test::compare_masked(a, b, mask, 2);
+    MESSAGE(what << ": " << d.compared << " pixels, " << d.pixels_over << " over 2 LSB, max " << d.max_abs);
+    CHECK(d.compared >= min_pixels);
+    CHECK(d.pixels_over <= d.compared / 100);
+    if (d.pixels_over > d.compared / 100) {
+        render_test::save_failure(what, a, b);
+    }
+}
+
+} // namespace
+
+TEST_SUITE("gl") {
+
+TEST_CASE("a portal view equals a direct render from the virtual camera inside the portal") {
+    scene::Scene s = small_scene();
+    auto setup = make_setup(s);
+    if (!setup) {
+        return;
+    }
+    auto links = render::place_portal_pair(setup->cameras.main.pair, s.world_bounds);
+    REQUIRE_MESSAGE(links.ok(), links.error());
+    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    REQUIRE_MESSAGE(quads.ok(), quads.error());
+    auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {1, kW, kH, render::ViewBounds::Tight});
+    REQUIRE_MESSAGE(nodes.ok(), nodes.error());
+    REQUIRE(nodes->size() == 2); // the camera and the view through the entry
+    const image::Image frame = recursion_frame(*setup, *links, *quads, *nodes);
+    // The virtual camera over the whole image, the exit quad (on its near plane) left out.
+    const image::Image reference = direct(*setup, *quads, (*nodes)[1].full, glm::mat4(1.0f), std::nullopt,
+                                          links->front().exit_instance);
+    const auto mask = polygon_mask(setup->cameras.main.pair, {links->front().quad()}, 1.0f);
+    // The texture's texels are the screen's pixels (crop is exact): 2 LSB,
+    // up to 1% over (edges). Measured: see the MESSAGE.
+    check_same(frame, reference, mask, "portal", 300);
+    // Not trivial: the portal shows other pixels than the plain camera does there.
+    const image::Image plain = direct(*setup, *quads, setup->cameras.main.pair, glm::mat4(1.0f), std::nullopt, -1);
+    CHECK(render_test::compare_masked(frame, plain, mask, 2).pixels_over > render_test::count(mask) / 4);
+}
+
+TEST_CASE("recursion level k of two facing mirrors equals the scene reflected k times") {
+    scene::Scene s = small_scene();
+    auto setup = make_setup(s);
+    if (!setup) {
+        return;
+    }
+    const auto& camera = setup->cameras.main.pair;
+    auto links = render::place_facing_links(camera, s.world_bounds, render::LinkSet::Mirrors);
+    REQUIRE_MESSAGE(links.ok(), links.error());
+    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    REQUIRE_MESSAGE(quads.ok(), quads.error());
+    for (int k = 1; k <= 3; ++k) {
+        auto nodes = render::plan_view_tree(camera, *links, {k, kW, kH, render::ViewBounds::Tight});
+        REQUIRE_MESSAGE(nodes.ok(), nodes.error());
+        const image::Image frame = recursion_frame(*setup, *links, *quads, *nodes);
+        for (std::size_t leaf = 0; leaf < nodes->size(); ++leaf) {
+            if ((*nodes)[leaf].level != k) {
+                continue;
+            }
+            // The chain camera -> leaf: W = R_1 ... R_k, and the regions of the mirrors' images.
+            std::vector<int> chain;
+            for (int n = static_cast<int>(leaf); n > 0; n = (*nodes)[static_cast<std::size_t>(n)].parent) {
+                chain.insert(chain.begin(), n);
+            }
+            glm::mat4 world(1.0f), world_inverse(1.0f); // W and W^-1 = R_k ... R_1 (each R is its own inverse)
+            std::vector<std::vector<glm::vec3>> regions;
+            frustum::Plane<float> last{0.0f, 0.0f, 1.0f, 0.0f};
+            // What the levels before k show of the scene (no quads): where
+            // any of it is not sky, an object stands in front of the level's
+            // mirror and hides level k; those pixels are not compared.
+            std::vector<image::Image> in_front;
+            std::optional<frustum::Plane<float>> in_front_clip;
+            for (int n : chain) {
+                {
+                    frustum::RigidTransform<float> carry;
+                    carry.matrix = world;
+                    carry.inverse = world_inverse;
+                    in_front.push_back(direct(*setup, *quads, camera, world,
+                                              in_front_clip ? std::optional(frustum::transformed(*in_front_clip, carry))
+                                                            : std::nullopt,
+                                              -1, false));
+                }
+                const render::ViewLink& link = (*links)[static_cast<std::size_t>((*nodes)[static_cast<std::size_t>(n)].link)];
+                std::vector<glm::vec3> image_quad;
+                for (const glm::vec3& corner : link.quad()) {
+                    image_quad.emplace_back(world * glm::vec4(corner, 1.0f));
+                }
+                regions.push_back(image_quad);
+                last = link.near_plane();
+                in_front_clip = last;
+                world = world * frustum::reflection_matrix(last);
+                world_inverse = frustum::reflection_matrix(last) * world_inverse;
+            }
+            // Keep what lies in front of the last mirror, carried by W.
+            frustum::RigidTransform<float> carry;
+            carry.matrix = world;
+            carry.inverse = world_inverse;
+            const frustum::Plane<float> clip = frustum::transformed(last, carry);
+            const render::ViewLink& through = (*links)[static_cast<std::size_t>((*nodes)[leaf].link)];
+            const image::Image reference = direct(*setup, *quads, camera, world, clip, through.surface_instance);
+            auto mask = polygon_mask(camera, regions, 1.5f);
+            for (const image::Image& picture : in_front) {
+                for (int y = 0; y < kH; ++y) {
+                    for (int x = 0; x < kW; ++x) {
+                        const image::Rgba p = image::pixel_at(picture, x, y);
+                        const image::Rgba sky = image::pixel_at(in_front.front(), 0, 0); // a sky pixel (top left)
+                        if (p[0] != sky[0] || p[1] != sky[1] || p[2] != sky[2]) {
+                            mask[static_cast<std::size_t>(y * kW + x)] = false;
+                        }
+                    }
+                }
+            }
+            check_same(frame, reference, mask, "recursion-level-" + std::to_string(k) + "-node-" + std::to_string(leaf),
+                       k == 1 ? 300 : 20);
+        }
+    }
+}
+
+TEST_CASE("nothing behind a mirror or an exit portal appears at any level") {
+    for (render::LinkSet set : {render::LinkSet::Mirrors, render::LinkSet::Portals}) {
+        CAPTURE(render::to_string(set));
+        scene::Scene s = small_scene();
+        auto probe = make_setup(s);
+        if (!probe) {
+            return;
+        }
+        auto links = render::place_facing_links(probe->cameras.main.pair, s.world_bounds, set);
+        REQUIRE_MESSAGE(links.ok(), links.error());
+        // A red marker just behind the left link (a mirror, or the portal's exit), within its quad.
+        const render::ViewLink& left = links->front(); // mirrors: the left one; portals: the only one
+        const frustum::Frame<float>& behind = set == render::LinkSet::Mirrors ? left.entry : left.exit;
+        // At the depth of the model's centre, 0.3 m behind the link's plane.
+        const glm::vec3 center = 0.5f * (s.world_bounds.min + s.world_bounds.max);
+        add_box(s, behind.origin + glm::dot(center - behind.origin, behind.x) * behind.x - 0.3f * behind.normal(),
+                0.2f, kMarkerColor, true);
+        auto setup = make_setup(s);
+        REQUIRE(setup);
+        auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+        REQUIRE_MESSAGE(quads.ok(), quads.error());
+        for (int depth : {1, 4}) {
+            auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, render::ViewBounds::Tight});
+            REQUIRE_MESSAGE(nodes.ok(), nodes.error());
+            int deepest = 0;
+            for (const render::ViewNode& node : *nodes) {
+                deepest = std::max(deepest, node.level);
+            }
+            CHECK(deepest == depth); // the recursion got as deep as asked
+            CHECK(count_color(recursion_frame(*setup, *links, *quads, *nodes), nullptr, kMarkerColor) == 0);
+            // The same views without their near planes (reflect / carry only) do show it: the check can fail.
+            auto bare = render::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, render::ViewBounds::FullViewport});
+            REQUIRE_MESSAGE(bare.ok(), bare.error());
+            for (render::ViewNode& node : *bare) {
+                node.clip_plane.reset();
+            }
+            CHECK(count_color(recursion_frame(*setup, *links, *quads, *bare), nullptr, kMarkerColor) > 10);
+        }
+    }
+}
+
+TEST_CASE("plan_view_tree: depth 0 is the camera alone, and the depth is checked") {
+    const scene::Scene s = small_scene();
+    const frustum::MatrixPair<float> camera = test_camera();
+    auto links = render::place_facing_links(camera, s.world_bounds, render::LinkSet::Mirrors);
+    REQUIRE(links.ok());
+    auto none = render::plan_view_tree(camera, *links, {0, kW, kH, render::ViewBounds::Tight});
+    REQUIRE(none.ok());
+    CHECK(none->size() == 1);
+    auto bad = render::plan_view_tree(camera, *links, {9, kW, kH, render::ViewBounds::Tight});
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error() == "render::plan_view_tree(): depth 9 must be in 0..8");
+    // Each level's rectangle lies inside its parent's.
+    auto tree = render::plan_view_tree(camera, *links, {6, kW, kH, render::ViewBounds::Tight});
+    REQUIRE(tree.ok());
+    for (const render::ViewNode& node : *tree) {
+        if (node.parent < 0) {
+            continue;
+        }
+        const auto& p = (*tree)[static_cast<std::size_t>(node.parent)].rect;
+        CHECK(node.rect.x >= p.x);
+        CHECK(node.rect.y >= p.y);
+        CHECK(node.rect.x + node.rect.width <= p.x + p.width);
+        CHECK(node.rect.y + node.rect.height <= p.y + p.height);
+    }
+}
+
+} // TEST_SUITE
