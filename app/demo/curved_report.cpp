@@ -233,9 +233,8 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
     if (!mirror) {
         return runtime(mirror.error());
     }
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(cameras->main.pair).eye,
-                                            frustum::infinity_tolerance<float>());
-    if (eye.w != 1.0f) {
+    const auto eye = frustum::eye_point(cameras->main.pair);
+    if (!eye) {
         return runtime("curved-report: the camera must be perspective");
     }
     auto context = make_context(r, reporter);
@@ -327,7 +326,7 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
         std::optional<render::CurvedPlan> plan;
         for (int run = 0; run < kTimedRuns; ++run) {
             const auto start = std::chrono::steady_clock::now();
-            auto planned = render::plan_curved_mirror(*mirror, glm::dvec3(glm::vec3(eye)), scene->world_bounds, grid);
+            auto planned = render::plan_curved_mirror(*mirror, glm::dvec3(*eye), scene->world_bounds, grid);
             fit_ms = std::min(fit_ms, milliseconds_since(start));
             if (!planned) {
                 return runtime(planned.error());

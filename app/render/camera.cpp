@@ -142,8 +142,8 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     }
     // Automatic: frame the scene together with the main camera's eye (when
     // finite: an orthographic eye is at infinity).
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(*main).eye, frustum::infinity_tolerance<float>());
-    const scene::Bounds bounds = eye.w == 1.0f ? including(scene.world_bounds, glm::vec3(eye)) : scene.world_bounds;
+    const auto eye = frustum::eye_point(*main);
+    const scene::Bounds bounds = eye ? including(scene.world_bounds, *eye) : scene.world_bounds;
     auto overview = framing_camera(bounds, kOverviewDirection, aspect);
     if (!overview) {
         return frustum::Error{overview.error()};

@@ -191,11 +191,11 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     if (!mirror) {
         return frustum::Error{kDraw + mirror.error()};
     }
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(draw.camera).eye, frustum::infinity_tolerance<float>());
-    if (eye.w != 1.0f) {
+    const auto eye = frustum::eye_point(draw.camera);
+    if (!eye) {
         return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
     }
-    auto plan = plan_curved_mirror(*mirror, glm::dvec3(glm::vec3(eye)), draw.bounds, draw.options.patches);
+    auto plan = plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
     if (!plan) {
         return frustum::Error{kDraw + plan.error()};
     }

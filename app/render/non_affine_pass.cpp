@@ -104,7 +104,7 @@ frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const fr
         return frustum::Error{std::string(kWhere) + ": needs a camera with a finite far plane"};
     }
     const glm::vec3 up = frame->y_axis;
-    const glm::vec3 forward = glm::normalize(glm::cross(frame->y_axis, frame->x_axis));
+    const glm::vec3 forward = frame->forward();
     const float near_m = glm::dot(frame->center - frame->eye, forward);
     const float far_m = std::abs(camera_planes.far->distance(frame->eye));
     if (!(options.slit_depth_m > 0.0f && options.slit_depth_m < options.pivot_depth_m &&

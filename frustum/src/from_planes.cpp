@@ -1,6 +1,7 @@
 #include "frustum/from_planes.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
 #include "frustum/queries.hpp"
@@ -21,8 +22,7 @@ constexpr T concurrency_tolerance() {
 
 template <class T>
 bool finite_plane(const Plane<T>& p) {
-    return std::isfinite(p.abcd.x) && std::isfinite(p.abcd.y) && std::isfinite(p.abcd.z) &&
-           std::isfinite(p.abcd.w);
+    return detail::finite4(p.abcd);
 }
 
 // Rows m0, m1, m3 of the matrix (m2 still open) and the eye they meet in.
@@ -172,7 +172,7 @@ Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector
                                   DepthRange depth) {
     const auto rows = side_rows(planes, "from_planes");
     if (!rows) {
-        return Error{rows.error()};
+        return rows.take_error();
     }
     if (far_points.empty()) {
         return detail::error_text("from_planes", "needs at least one far point", "none");
@@ -182,7 +182,7 @@ Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector
     for (const Vec3<T>& point : far_points) {
         const auto k = k_near_through(*rows, point, depth);
         if (!k) {
-            return Error{k.error()};
+            return k.take_error();
         }
         k_near = std::min(k_near, *k);
     }
@@ -194,7 +194,7 @@ Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>& planes, D
                                                   int max_iterations) {
     const auto rows = side_rows(planes, "from_planes_volume_growth");
     if (!rows) {
-        return Error{rows.error()};
+        return rows.take_error();
     }
     const Vec4<T> n = rows->near.abcd;
     // eq. 13 (|N.xyz| = 1 after normalization): F perpendicular to N.

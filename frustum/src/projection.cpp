@@ -60,7 +60,7 @@ Result<MatrixPair<T>> perspective(T fovy_rad, T aspect, T near_m, std::optional<
     auto pair = off_axis(-right, right, -top, top, near_m, far_m, depth);
     if (!pair) {
         // Only representability can fail here; say which call the user made.
-        return Error{"frustum::perspective(): " + pair.error()};
+        return pair.take_error_in("frustum::perspective()");
     }
     return pair;
 }

@@ -50,7 +50,7 @@ Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, co
     const T bottom = glm::dot(vu, va) * scale, top = glm::dot(vu, vc) * scale;
     auto projection = off_axis(left, right, bottom, top, near_m, far_m, depth);
     if (!projection) {
-        return Error{"frustum::screen_projection(): " + projection.error()};
+        return projection.take_error_in("frustum::screen_projection()");
     }
     // Rows of the view rotation are vr, vu, vn (Kooima's M^T), then -pe.
     Mat3<T> rotation;
