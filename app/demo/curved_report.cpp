@@ -299,7 +299,7 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
             const auto start = std::chrono::steady_clock::now();
             auto frame = renderer->render(effect, *cameras, o);
             if (!frame) {
-                return frustum::Error{frame.error()};
+                return frame.take_error();
             }
             if (run > 0) times.push_back(milliseconds_since(start));
             if (picture) *picture = std::move(*frame);
@@ -351,7 +351,7 @@ std::variant<CurvedReport, Failure> run_curved_report(const CurvedReportRequest&
             black_options.mirror_tint = glm::vec3(0.0f);
             auto black = renderer->render(render::Effect::Curved, *cameras, black_options);
             if (!black) {
-                return frustum::Error{black.error()};
+                return black.take_error();
             }
             std::vector<bool> mask = black_pixels(*black);
             for (std::size_t p = 0; p < mask.size(); ++p) {

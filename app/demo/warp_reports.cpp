@@ -134,7 +134,7 @@ struct Session {
         for (int run = 0; run <= runs; ++run) {
             const auto start = std::chrono::steady_clock::now();
             if (auto status = draw(); !status) {
-                return frustum::Error{status.error()};
+                return status.take_error();
             }
             fn->Finish();
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -151,43 +151,43 @@ frustum::Result<std::unique_ptr<Session>> open_session(const RenderRequest& r, c
     auto s = std::make_unique<Session>();
     auto scene = scene::load_gltf(r.scene_path);
     if (!scene) {
-        return frustum::Error{scene.error()};
+        return scene.take_error();
     }
     s->scene = std::move(*scene);
     auto camera_index = render::find_camera(s->scene, r.camera);
     if (!camera_index) {
-        return frustum::Error{camera_index.error()};
+        return camera_index.take_error();
     }
     auto cameras = render::make_cameras(s->scene, *camera_index, r.width_px, r.height_px);
     if (!cameras) {
-        return frustum::Error{cameras.error()};
+        return cameras.take_error();
     }
     s->cameras.emplace(std::move(*cameras));
     auto context = r.backend ? gl::create_offscreen_context(*r.backend, {})
                              : gl::create_offscreen_context_with_fallback({});
     if (!context) {
-        return frustum::Error{context.error()};
+        return context.take_error();
     }
     s->context = std::move(*context);
     reporter.note("context: " + gl::summary(s->context->describe()));
     auto fn = gl::Functions::load(*s->context);
     if (!fn) {
-        return frustum::Error{fn.error()};
+        return fn.take_error();
     }
     s->fn = std::make_unique<gl::Functions>(*fn);
     auto renderer = render::Renderer::create(*s->context, *s->fn, s->scene);
     if (!renderer) {
-        return frustum::Error{renderer.error()};
+        return renderer.take_error();
     }
     s->renderer.emplace(std::move(*renderer));
     auto depth = render::DepthPolicy::apply(*s->fn, *s->context, r.depth);
     if (!depth) {
-        return frustum::Error{depth.error()};
+        return depth.take_error();
     }
     s->depth.emplace(*depth);
     auto frame = gl::OffscreenTarget::create(*s->fn, {r.width_px, r.height_px});
     if (!frame) {
-        return frustum::Error{frame.error()};
+        return frame.take_error();
     }
     s->frame.emplace(std::move(*frame));
     return s;
@@ -229,7 +229,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     auto reference_ms = s.median_ms(request.runs, [&]() -> frustum::Status {
         auto drawn = render::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
         if (!drawn) {
-            return frustum::Error{drawn.error()};
+            return drawn.take_error();
         }
         levels = *drawn;
         return {};
@@ -364,7 +364,7 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
         auto ms = s.median_ms(request.runs, [&]() -> frustum::Status {
             auto drawn = render::draw_non_affine_frame(ctx, *s.frame, geometry, *frustum, row.options);
             if (!drawn) {
-                return frustum::Error{drawn.error()};
+                return drawn.take_error();
             }
             stats = *drawn;
             return {};

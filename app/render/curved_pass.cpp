@@ -205,11 +205,11 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, frame.width(), frame.height());
     auto atlas = render_atlas(ctx, **plan, tile, draw.mirror.instance);
     if (!atlas) {
-        return frustum::Error{atlas.error()};
+        return atlas.take_error();
     }
     auto mesh = upload_cap(ctx.fn, *mirror, draw.options.patches);
     if (!mesh) {
-        return frustum::Error{mesh.error()};
+        return mesh.take_error();
     }
     frame.bind();
     begin_frame(ctx);

@@ -61,7 +61,7 @@ void draw_mirror_surface(const PassContext& ctx, const frustum::MatrixPair<float
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
     auto plan = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(), draw.method, draw.bounds);
     if (!plan) {
-        return frustum::Error{plan.error()};
+        return plan.take_error();
     }
     const int surface = draw.mirror.instance;
     if (!plan->has_value() || surface < 0) {
@@ -73,7 +73,7 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
     const ReflectionView& view = **plan;
     auto reflection = render_reflection(ctx, view, surface);
     if (!reflection) {
-        return frustum::Error{reflection.error()};
+        return reflection.take_error();
     }
     frame.bind();
     begin_frame(ctx);

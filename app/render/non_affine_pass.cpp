@@ -225,7 +225,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
     if (auto status = gl::check_error(fn, kDraw); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return stats;
 }

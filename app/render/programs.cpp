@@ -21,7 +21,7 @@ frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_pla
     const std::string fragment = detail::insert_after_version(shaders::scene_frag, defines);
     auto program = link(fn, shaders::scene_vert, fragment, name);
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     SceneProgram p;
     p.program = std::move(*program);
@@ -47,7 +47,7 @@ frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_pla
         u.find(p.alpha_cutoff, "u_alpha_cutoff");
     }
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }
@@ -55,7 +55,7 @@ frustum::Result<SceneProgram> build_scene(const gl::Functions& fn, bool clip_pla
 frustum::Result<MirrorCompositeProgram> build_mirror_composite(const gl::Functions& fn) {
     auto program = link(fn, shaders::mirror_composite_vert, shaders::mirror_composite_frag, "mirror composite");
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     MirrorCompositeProgram p;
     p.program = std::move(*program);
@@ -66,7 +66,7 @@ frustum::Result<MirrorCompositeProgram> build_mirror_composite(const gl::Functio
     u.find(p.reflection, "u_reflection");
     u.find(p.tint, "u_tint");
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }
@@ -74,7 +74,7 @@ frustum::Result<MirrorCompositeProgram> build_mirror_composite(const gl::Functio
 frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
     auto program = link(fn, shaders::line_vert, shaders::line_frag, "line");
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     LineProgram p;
     p.program = std::move(*program);
@@ -82,7 +82,7 @@ frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
     u.find(p.view_projection, "u_view_projection");
     u.find(p.color, "u_color");
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }
@@ -90,7 +90,7 @@ frustum::Result<LineProgram> build_line(const gl::Functions& fn) {
 frustum::Result<CurvedMirrorProgram> build_curved_mirror(const gl::Functions& fn) {
     auto program = link(fn, shaders::curved_mirror_vert, shaders::curved_mirror_frag, "curved mirror");
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     CurvedMirrorProgram p;
     p.program = std::move(*program);
@@ -102,7 +102,7 @@ frustum::Result<CurvedMirrorProgram> build_curved_mirror(const gl::Functions& fn
     u.find(p.half_texel, "u_half_texel");
     u.find(p.tint, "u_tint");
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }
@@ -123,7 +123,7 @@ frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
         for (const bool mask : {false, true}) {
             auto scene = build_scene(fn, clip, mask);
             if (!scene) {
-                return frustum::Error{scene.error()};
+                return scene.take_error();
             }
             programs.scene[clip ? 1 : 0][mask ? 1 : 0] = std::move(*scene);
         }
@@ -131,28 +131,28 @@ frustum::Result<Programs> Programs::build(const gl::Functions& fn) {
     for (const bool mask : {false, true}) {
         auto non_affine = build_non_affine_program(fn, mask);
         if (!non_affine) {
-            return frustum::Error{non_affine.error()};
+            return non_affine.take_error();
         }
         programs.non_affine[mask ? 1 : 0] = std::move(*non_affine);
     }
     auto mirror_composite = build_mirror_composite(fn);
     if (!mirror_composite) {
-        return frustum::Error{mirror_composite.error()};
+        return mirror_composite.take_error();
     }
     programs.mirror_composite = std::move(*mirror_composite);
     auto line = build_line(fn);
     if (!line) {
-        return frustum::Error{line.error()};
+        return line.take_error();
     }
     programs.line = std::move(*line);
     auto curved_mirror = build_curved_mirror(fn);
     if (!curved_mirror) {
-        return frustum::Error{curved_mirror.error()};
+        return curved_mirror.take_error();
     }
     programs.curved_mirror = std::move(*curved_mirror);
     auto lens_remap = build_lens_remap_program(fn);
     if (!lens_remap) {
-        return frustum::Error{lens_remap.error()};
+        return lens_remap.take_error();
     }
     programs.lens_remap = std::move(*lens_remap);
     return programs;

@@ -88,7 +88,7 @@ frustum::Result<frustum::Lens<float>> fit_lens(const frustum::MatrixPair<float>&
     }
     auto axes = eye_axes(camera, kWhere);
     if (!axes) {
-        return frustum::Error{axes.error()};
+        return axes.take_error();
     }
     const frustum::NearPlaneFrame<float>& frame = axes->frame;
     frustum::Lens<float> lens;

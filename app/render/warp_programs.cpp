@@ -18,7 +18,7 @@ using Uniforms = detail::UniformFinder;
 frustum::Result<LensRemapProgram> build_lens_remap_program(const gl::Functions& fn) {
     auto program = link(fn, shaders::lens_remap_vert, shaders::lens_remap_frag, "lens remap");
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     LensRemapProgram p;
     p.program = std::move(*program);
@@ -29,7 +29,7 @@ frustum::Result<LensRemapProgram> build_lens_remap_program(const gl::Functions& 
     u.find(p.half_size_m, "u_half_size_m");
     u.find(p.lens, "u_lens");
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }
@@ -40,7 +40,7 @@ frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& 
     const char* name = alpha_mask ? "masked non-affine" : "non-affine";
     auto program = link(fn, vertex, fragment, name);
     if (!program) {
-        return frustum::Error{program.error()};
+        return program.take_error();
     }
     NonAffineProgram p;
     p.program = std::move(*program);
@@ -62,7 +62,7 @@ frustum::Result<NonAffineProgram> build_non_affine_program(const gl::Functions& 
         u.find(p.alpha_cutoff, "u_alpha_cutoff");
     }
     if (auto status = u.status(); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return p;
 }

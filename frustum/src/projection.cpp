@@ -1,8 +1,10 @@
 #include "frustum/projection.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
+#include "frustum/matrix_rows.hpp"
 
 #include <cmath>
 #include <limits>
@@ -98,24 +100,17 @@ Result<MatrixPair<T>> off_axis(T left, T right, T bottom, T top, T near_m, std::
                                 {{"near", near_m}, {"far", far_m.value_or(std::numeric_limits<T>::infinity())}});
     }
 
-    Mat4<T> m(T(0)); // m[column][row]
-    m[0][0] = sx;
-    m[1][1] = sy;
-    m[2][0] = cx;
-    m[2][1] = cy;
-    m[2][2] = a;
-    m[2][3] = T(-1);
-    m[3][2] = b;
-
-    // Closed form: z = -W, w = (Z + A W)/B, x = (X + cx W)/sx, y = (Y + cy W)/sy.
-    Mat4<T> inv(T(0));
-    inv[0][0] = T(1) / sx;
-    inv[3][0] = cx / sx;
-    inv[1][1] = T(1) / sy;
-    inv[3][1] = cy / sy;
-    inv[3][2] = T(-1);
-    inv[2][3] = T(1) / b;
-    inv[3][3] = a / b;
+    // The matrix drawn in projection.hpp, and its closed-form inverse:
+    // z = -W, w = (Z + A W)/B, x = (X + cx W)/sx, y = (Y + cy W)/sy.
+    const T o = T(0), one = T(1);
+    const Mat4<T> m = from_rows<T>({sx, o, cx, o},
+                                   {o, sy, cy, o},
+                                   {o, o, a, b},
+                                   {o, o, -one, o});
+    const Mat4<T> inv = from_rows<T>({one / sx, o, o, cx / sx},
+                                     {o, one / sy, o, cy / sy},
+                                     {o, o, o, -one},
+                                     {o, o, one / b, a / b});
     return detail::PairFactory::make(m, inv, depth, false);
 }
 
@@ -149,21 +144,16 @@ Result<MatrixPair<T>> orthographic(T left, T right, T bottom, T top, T near_m, T
                                 {{"near", near_m}, {"far", far_m}});
     }
 
-    Mat4<T> m(T(1));
-    m[0][0] = sx;
-    m[1][1] = sy;
-    m[2][2] = a;
-    m[3][0] = tx;
-    m[3][1] = ty;
-    m[3][2] = b;
-
-    Mat4<T> inv(T(1));
-    inv[0][0] = T(1) / sx;
-    inv[1][1] = T(1) / sy;
-    inv[2][2] = T(1) / a;
-    inv[3][0] = -tx / sx;
-    inv[3][1] = -ty / sy;
-    inv[3][2] = -b / a;
+    // The box matrix (scale and shift per axis) and its closed-form inverse.
+    const T o = T(0), one = T(1);
+    const Mat4<T> m = from_rows<T>({sx, o, o, tx},
+                                   {o, sy, o, ty},
+                                   {o, o, a, b},
+                                   {o, o, o, one});
+    const Mat4<T> inv = from_rows<T>({one / sx, o, o, -tx / sx},
+                                     {o, one / sy, o, -ty / sy},
+                                     {o, o, one / a, -b / a},
+                                     {o, o, o, one});
     return detail::PairFactory::make(m, inv, depth, false);
 }
 
@@ -199,7 +189,7 @@ Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, con
     const Vec3<T> side_unnormalized = glm::cross(forward, up);
     const T side_length = glm::length(side_unnormalized);
     const T up_length = glm::length(up);
-    if (!(side_length > T(1e-6) * up_length) || !(up_length > T(0))) {
+    if (!(side_length > detail::degenerate_ratio<T>() * up_length) || !(up_length > T(0))) {
         return detail::error_text("look_at", "up must be non-zero and not parallel to the viewing direction",
                                   "up=" + detail::vector_text(up) + " direction=" + detail::vector_text(forward));
     }

@@ -1,6 +1,7 @@
 #include "frustum/queries.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,7 @@ FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
     const Plane<T> far(s * (clip_z_far<T>(depth) * m3 - m2));
     // An infinite far plane has a (numerically) zero normal: erratum 9.
     const T scale = glm::length(Vec3<T>(m3)) + glm::length(Vec3<T>(m2));
-    if (glm::length(far.normal()) > T(64) * std::numeric_limits<T>::epsilon() * scale) {
+    if (glm::length(far.normal()) > detail::rounding_floor<T>() * scale) {
         p.far = far;
     }
     return p;

@@ -2,6 +2,7 @@
 
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/finite.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/projection.hpp"
 
 #include <cmath>
@@ -34,9 +35,9 @@ Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, co
     const Vec3<T> vn = glm::normalize(glm::cross(vr, vu));
     const Vec3<T> va = pa - pe, vb = pb - pe, vc = pc - pe;
     const T distance = glm::dot(vn, pe - pa);
-    if (!(distance > T(1e-6) * (width + height))) {
+    if (!(distance > detail::degenerate_ratio<T>() * (width + height))) {
         return detail::error<T>("screen_projection",
-                                std::abs(distance) <= T(1e-6) * (width + height)
+                                std::abs(distance) <= detail::degenerate_ratio<T>() * (width + height)
                                     ? "eye must not lie in the screen's plane"
                                     : "eye must be in front of the screen (the side (lower_right - lower_left) x "
                                       "(upper_left - lower_left) points to)",

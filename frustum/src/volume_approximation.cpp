@@ -1,6 +1,7 @@
 #include "frustum/volume_approximation.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/finite.hpp"
 #include "frustum/reflect.hpp"
 
@@ -42,7 +43,7 @@ template <class T>
 bool intersect3(const Plane<T>& a, const Plane<T>& b, const Plane<T>& c, Vec3<T>& out) {
     const Mat3<T> rows_t(a.normal(), b.normal(), c.normal()); // columns = normals
     const T det = glm::determinant(rows_t);
-    if (!(std::abs(det) > T(1e-9))) {
+    if (!(std::abs(det) > detail::corner_determinant_floor<T>())) {
         return false;
     }
     // Solve n_k . x = -d_k: x = (-(d_a) (b x c) - d_b (c x a) - d_c (a x b)) / det
@@ -125,7 +126,7 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
             const Vec3<T> candidate = origin + step * gradient;
             Vec3<T> candidate_gradient;
             const T candidate_value = volume_objective(target, candidate, &candidate_gradient);
-            if (near.distance(candidate) < T(0) && candidate_value >= value + T(1e-4) * step * g2) {
+            if (near.distance(candidate) < T(0) && candidate_value >= value + detail::sufficient_increase<T>() * step * g2) {
                 const T gain = candidate_value - value;
                 origin = candidate;
                 value = candidate_value;
