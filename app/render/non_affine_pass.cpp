@@ -25,9 +25,7 @@ constexpr const char* kDraw = "render::draw_non_affine_frame()";
 // its negative side.
 frustum::Plane<float> outward_plane(const glm::vec3& a, const glm::vec3& b, const glm::vec3& up,
                                     const glm::vec3& inside) {
-    const glm::vec3 normal = glm::normalize(glm::cross(b - a, up));
-    const frustum::Plane<float> plane(glm::vec4(normal, -glm::dot(normal, a)));
-    return plane.distance(inside) < 0.0f ? plane : plane.flipped();
+    return frustum::Plane<float>::at(glm::normalize(glm::cross(b - a, up)), a).facing(inside).flipped();
 }
 
 // A triangle range of the index buffer and how to draw it.

@@ -128,7 +128,7 @@ namespace {
 template <class T>
 Result<T> k_near_through(const SideRows<T>& rows, const Vec3<T>& far_point, DepthRange depth) {
     const Vec4<T> q(far_point, T(1));
-    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) {
+    if (!detail::finite3(far_point)) {
         return detail::error_text("from_planes", "far point must be finite", detail::vector_text(far_point));
     }
     const T in_front = glm::dot(rows.m3, q); // clip w of Q

@@ -1,6 +1,7 @@
 #include "frustum/projection.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
@@ -13,10 +14,7 @@ namespace frustum {
 
 namespace {
 
-template <class T>
-bool finite(T v) {
-    return std::isfinite(v);
-}
+using detail::finite;
 
 // Depth row coefficients: clip z = A z_eye + B (perspective, w = -z_eye).
 template <class T>
@@ -170,8 +168,7 @@ RigidTransform<T> RigidTransform<T>::from_rotation_translation(const Mat3<T>& ro
 
 template <class T>
 Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, const Vec3<T>& up) {
-    const auto all_finite = [](const Vec3<T>& v) { return finite(v.x) && finite(v.y) && finite(v.z); };
-    if (!all_finite(eye) || !all_finite(target) || !all_finite(up)) {
+    if (!detail::finite3(eye) || !detail::finite3(target) || !detail::finite3(up)) {
         return detail::error_text("look_at", "eye, target and up must be finite",
                                   detail::vector_text(eye) + " " + detail::vector_text(target) + " " +
                                       detail::vector_text(up));

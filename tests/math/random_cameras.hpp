@@ -130,7 +130,7 @@ frustum::Result<MatrixPair<T>> try_make(const CameraSpec& c) {
                                        c.depth);
     if (!projection || !c.rotated) return projection;
     const auto view = frustum::look_at<T>(Vec3<T>(c.eye), Vec3<T>(c.target), Vec3<T>(c.up));
-    if (!view) return frustum::Error{view.error()};
+    if (!view) return view.take_error();
     return frustum::compose(*projection, *view);
 }
 

@@ -20,7 +20,8 @@ struct Plane {
     explicit Plane(const Vec4<T>& coefficients) : abcd(coefficients) {}
     Plane(T a, T b, T c, T d) : abcd(a, b, c, d) {}
 
-    // The plane with this normal (any length) through `point`.
+    // The plane with this normal (any length) through `point`, unchecked;
+    // for user input use plane_from_point_normal (rigid.hpp: checked, unit).
     static Plane at(const Vec3<T>& normal, const Vec3<T>& point) {
         return Plane(Vec4<T>(normal, -glm::dot(normal, point)));
     }

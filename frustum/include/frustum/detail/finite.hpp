@@ -8,6 +8,12 @@
 
 namespace frustum::detail {
 
+// A scalar: neither NaN nor infinite.
+template <class T>
+bool finite(T v) {
+    return std::isfinite(v);
+}
+
 template <class T>
 bool finite3(const Vec3<T>& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
