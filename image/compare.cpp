@@ -33,7 +33,7 @@ double Diff::fraction_over() const {
 
 frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_tolerance) {
     if (auto ok = check_pair(a, b, "image::compare()"); !ok) {
-        return frustum::Error{ok.error()};
+        return ok.take_error();
     }
     if (per_channel_tolerance < 0) {
         return frustum::Error{"image::compare(): tolerance must be >= 0, got " +
@@ -59,7 +59,7 @@ frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_to
 
 frustum::Result<Image> diff_image(const Image& a, const Image& b, int gain) {
     if (auto ok = check_pair(a, b, "image::diff_image()"); !ok) {
-        return frustum::Error{ok.error()};
+        return ok.take_error();
     }
     if (gain < 1) {
         return frustum::Error{"image::diff_image(): gain must be >= 1, got " +

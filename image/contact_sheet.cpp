@@ -37,7 +37,7 @@ frustum::Result<Image> contact_sheet(
         }
         const std::string where = "image::contact_sheet(): image '" + name + "'";
         if (auto valid = validate(*picture, where.c_str()); !valid) {
-            return frustum::Error{valid.error()};
+            return valid.take_error();
         }
         cell_width = std::max(cell_width, picture->width);
         cell_height = std::max(cell_height, picture->height);

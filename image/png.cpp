@@ -114,7 +114,7 @@ frustum::Status write_png(const Image& image, const std::string& path) {
     std::string temp_path;
     auto fd = create_temporary(path, temp_path);
     if (!fd) {
-        return frustum::Error{fd.error()};
+        return fd.take_error();
     }
     FdWriter writer{*fd};
     const int encoded = stbi_write_png_to_func(write_all, &writer, image.width, image.height, 4,

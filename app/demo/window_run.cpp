@@ -91,7 +91,7 @@ window::ViewerState initial_state(const WindowRequest& request) {
 frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSize& size, const std::string& path) {
     auto pixels = gl::read_window_pixels(fn, size.width_px, size.height_px);
     if (!pixels) {
-        return frustum::Error{pixels.error()};
+        return pixels.take_error();
     }
     return image::write_png(*pixels, path);
 }

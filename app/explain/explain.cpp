@@ -67,9 +67,9 @@ frustum::Result<std::string> walkthrough(const Options& o) {
     constexpr double degrees = 3.14159265358979323846 / 180.0;
     const auto projection = frustum::perspective(o.fovy_deg * degrees, o.aspect, o.near_m,
                                                  std::optional<double>(o.far_m), DepthRange::ZeroToOne);
-    if (!projection) return frustum::Error{projection.error()};
+    if (!projection) return projection.take_error();
     const auto view = frustum::look_at(glm::dvec3(0, 1.7, 6), glm::dvec3(0, 1, 0), glm::dvec3(0, 1, 0));
-    if (!view) return frustum::Error{view.error()};
+    if (!view) return view.take_error();
     const Pair camera = frustum::compose(*projection, *view);
 
     std::ostringstream out;
@@ -86,7 +86,7 @@ frustum::Result<std::string> walkthrough(const Options& o) {
     const auto far_corner = frustum::to_point(frustum::key_points(camera).corners[4], 1e-12);
     const auto rebuilt = frustum::from_planes(frustum::SidePlanes<double>{p.left, p.right, p.bottom, p.top, p.near},
                                               glm::dvec3(far_corner), DepthRange::ZeroToOne);
-    if (!rebuilt) return frustum::Error{rebuilt.error()};
+    if (!rebuilt) return rebuilt.take_error();
     const double factor = rebuilt->matrix()[3][3] / camera.matrix()[3][3];
     double deviation = 0.0;
     for (int c = 0; c < 4; ++c) {
@@ -98,20 +98,20 @@ frustum::Result<std::string> walkthrough(const Options& o) {
         << " (max deviation " << deviation << ")\n";
     const auto grown = frustum::from_planes_volume_growth(
         frustum::SidePlanes<double>{p.left, p.right, p.bottom, p.top, p.near}, DepthRange::ZeroToOne);
-    if (!grown) return frustum::Error{grown.error()};
+    if (!grown) return grown.take_error();
     out << "Rebuilt by volume growth (§4.2, corrected stop): " << grown->iterations << " iteration(s), valid: "
         << (frustum::validate(grown->pair).valid() ? "yes" : "no") << "\n\n";
 
     const frustum::Plane<double> floor_mirror(0, 1, 0, 0);
     const auto mirrored = frustum::mirror(camera, floor_mirror);
-    if (!mirrored) return frustum::Error{mirrored.error()};
+    if (!mirrored) return mirrored.take_error();
     out << "Mirror in the floor y = 0 (§5.2: reflect, then the floor becomes the near plane):\n";
     print_planes(out, *mirrored);
     out << "  winding flipped: " << (mirrored->flips_winding() ? "yes" : "no")
         << ", max |M M^-1 - I| = " << identity_error(*mirrored) << " (inverse updated analytically)\n\n";
 
     const auto tile = frustum::crop(camera, frustum::CropRect<double>{640, 0, 640, 360, 1280, 720});
-    if (!tile) return frustum::Error{tile.error()};
+    if (!tile) return tile.take_error();
     out << "Crop to the bottom-right quarter of a 1280x720 image (§5.1, offset from the bottom-left):\n";
     out << "  near corners C1..C4:\n";
     const auto corners = frustum::key_points(*tile).corners;

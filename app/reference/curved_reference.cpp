@@ -239,7 +239,7 @@ frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const
     }
     auto triangles = collect(scene);
     if (!triangles) {
-        return frustum::Error{triangles.error()};
+        return triangles.take_error();
     }
     const PixelRays rays(camera, width_px, height_px);
     TracedFrame out;

@@ -152,7 +152,7 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         set_frame_state(ctx);
     }
     if (auto status = gl::check_error(ctx.fn, kWhere); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return levels;
 }

@@ -128,7 +128,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     auto main = from_file ? camera_pair(scene.cameras[static_cast<std::size_t>(main_camera)], aspect)
                           : framing_camera(scene.world_bounds, kFrontDirection, aspect);
     if (!main) {
-        return frustum::Error{main.error()};
+        return main.take_error();
     }
     const std::string main_name = from_file ? scene.cameras[static_cast<std::size_t>(main_camera)].name : "framing";
 
@@ -136,17 +136,17 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     if (overview_index >= 0 && overview_index != main_camera) {
         auto overview = camera_pair(scene.cameras[static_cast<std::size_t>(overview_index)], aspect);
         if (!overview) {
-            return frustum::Error{overview.error()};
+            return overview.take_error();
         }
         return Cameras{{main_name, *main}, {"overview", *overview}};
     }
     // Automatic: frame the scene together with the main camera's eye (when
     // finite: an orthographic eye is at infinity).
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(*main).eye, frustum::infinity_tolerance<float>());
-    const scene::Bounds bounds = eye.w == 1.0f ? including(scene.world_bounds, glm::vec3(eye)) : scene.world_bounds;
+    const auto eye = frustum::eye_point(*main);
+    const scene::Bounds bounds = eye ? including(scene.world_bounds, *eye) : scene.world_bounds;
     auto overview = framing_camera(bounds, kOverviewDirection, aspect);
     if (!overview) {
-        return frustum::Error{overview.error()};
+        return overview.take_error();
     }
     return Cameras{{main_name, *main}, {"automatic overview", *overview}};
 }

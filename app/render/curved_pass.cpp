@@ -191,11 +191,11 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     if (!mirror) {
         return frustum::Error{kDraw + mirror.error()};
     }
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(draw.camera).eye, frustum::infinity_tolerance<float>());
-    if (eye.w != 1.0f) {
+    const auto eye = frustum::eye_point(draw.camera);
+    if (!eye) {
         return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
     }
-    auto plan = plan_curved_mirror(*mirror, glm::dvec3(glm::vec3(eye)), draw.bounds, draw.options.patches);
+    auto plan = plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
     if (!plan) {
         return frustum::Error{kDraw + plan.error()};
     }
@@ -205,11 +205,11 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, frame.width(), frame.height());
     auto atlas = render_atlas(ctx, **plan, tile, draw.mirror.instance);
     if (!atlas) {
-        return frustum::Error{atlas.error()};
+        return atlas.take_error();
     }
     auto mesh = upload_cap(ctx.fn, *mirror, draw.options.patches);
     if (!mesh) {
-        return frustum::Error{mesh.error()};
+        return mesh.take_error();
     }
     frame.bind();
     begin_frame(ctx);

@@ -152,7 +152,7 @@ frustum::Result<gl::Texture> upload_texture(const gl::Functions& fn, const image
     }
     auto texture = gl::Texture::create(fn);
     if (!texture) {
-        return frustum::Error{texture.error()};
+        return texture.take_error();
     }
     fn.BindTexture(GL_TEXTURE_2D, texture->id());
     fn.TexStorage2D(GL_TEXTURE_2D, mip_levels(image.width, image.height), GL_SRGB8_ALPHA8, image.width,
@@ -183,7 +183,7 @@ frustum::Result<GpuScene> GpuScene::upload(const gl::Functions& fn, const scene:
         }
         auto texture = upload_texture(fn, scene.images[i], i);
         if (!texture) {
-            return frustum::Error{texture.error()};
+            return texture.take_error();
         }
         gpu.textures_.push_back(std::move(*texture));
     }
@@ -196,14 +196,14 @@ frustum::Result<GpuScene> GpuScene::upload(const gl::Functions& fn, const scene:
         for (const scene::Primitive& primitive : mesh.primitives) {
             auto uploaded = upload_primitive(fn, primitive);
             if (!uploaded) {
-                return frustum::Error{uploaded.error()};
+                return uploaded.take_error();
             }
             gpu_mesh.push_back(std::move(*uploaded));
         }
     }
     gpu.instances_ = scene.instances;
     if (auto status = gl::check_error(fn, kUpload); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return gpu;
 }

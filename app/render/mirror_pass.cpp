@@ -79,7 +79,7 @@ void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<f
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
     auto plan = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(), draw.method, draw.bounds);
     if (!plan) {
-        return frustum::Error{plan.error()};
+        return plan.take_error();
     }
     const int surface = draw.mirror.instance;
     if (!plan->has_value() || surface < 0) {
@@ -91,7 +91,7 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
     const ReflectionView& view = **plan;
     auto reflection = render_reflection(ctx, view, surface);
     if (!reflection) {
-        return frustum::Error{reflection.error()};
+        return reflection.take_error();
     }
     if (draw.fog) {
         if (auto status = fog_reflection(ctx, *reflection, view, frame, draw, *draw.fog); !status) {

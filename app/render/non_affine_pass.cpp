@@ -25,9 +25,7 @@ constexpr const char* kDraw = "render::draw_non_affine_frame()";
 // its negative side.
 frustum::Plane<float> outward_plane(const glm::vec3& a, const glm::vec3& b, const glm::vec3& up,
                                     const glm::vec3& inside) {
-    const glm::vec3 normal = glm::normalize(glm::cross(b - a, up));
-    const frustum::Plane<float> plane(glm::vec4(normal, -glm::dot(normal, a)));
-    return plane.distance(inside) < 0.0f ? plane : plane.flipped();
+    return frustum::Plane<float>::at(glm::normalize(glm::cross(b - a, up)), a).facing(inside).flipped();
 }
 
 // A triangle range of the index buffer and how to draw it.
@@ -90,7 +88,7 @@ frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const fr
         return frustum::Error{std::string(kWhere) + ": needs a camera with a finite far plane"};
     }
     const glm::vec3 up = frame->y_axis;
-    const glm::vec3 forward = glm::normalize(glm::cross(frame->y_axis, frame->x_axis));
+    const glm::vec3 forward = frame->forward();
     const float near_m = glm::dot(frame->center - frame->eye, forward);
     const float far_m = std::abs(camera_planes.far->distance(frame->eye));
     if (!(options.slit_depth_m > 0.0f && options.slit_depth_m < options.pivot_depth_m &&
@@ -211,7 +209,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
     if (auto status = gl::check_error(fn, kDraw); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return stats;
 }

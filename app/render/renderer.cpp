@@ -47,7 +47,7 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
                                            const scene::Scene& scene) {
     auto programs = Programs::build(fn);
     if (!programs) {
-        return frustum::Error{programs.error()};
+        return programs.take_error();
     }
     auto fog_pass = FogPass::build(fn);
     if (!fog_pass) {
@@ -55,7 +55,7 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
     }
     auto gpu_scene = GpuScene::upload(fn, scene);
     if (!gpu_scene) {
-        return frustum::Error{gpu_scene.error()};
+        return gpu_scene.take_error();
     }
     // The quads of the portal pair, the facing mirrors and the facing
     // portal; link_group() places them for each frame's camera.
@@ -116,7 +116,7 @@ frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cam
         return frustum::Error{"render::Renderer::render(): " + frame.error()};
     }
     if (auto status = render_into(effect, cameras, options, *frame); !status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return frame->read_rgba8();
 }
@@ -125,7 +125,7 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
                                       const gl::OffscreenTarget& frame) const {
     auto depth = DepthPolicy::apply(*fn_, *context_, options.depth);
     if (!depth) {
-        return frustum::Error{depth.error()};
+        return depth.take_error();
     }
     frame.bind();
     PassContext ctx = pass_context(*depth, options.lighting);
@@ -179,7 +179,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
     case Effect::Lens: {
         auto lens = fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
         if (!lens) {
-            return frustum::Error{lens.error()};
+            return lens.take_error();
         }
         // The disc is hidden: the lens effect is the magnifier itself, and the
         // lens reference (reference/lens_reference.hpp) remaps a frame without it.
@@ -189,15 +189,15 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
     case Effect::NonAffine: {
         auto fitted = fit_non_affine(cameras.main.pair, bounds_, options.nonaffine, options.fit);
         if (!fitted) {
-            return frustum::Error{fitted.error()};
+            return fitted.take_error();
         }
         auto slits = crossed_slits_frustum(cameras.main.pair, *fitted, ctx.depth.gpu_range());
         if (!slits) {
-            return frustum::Error{slits.error()};
+            return slits.take_error();
         }
         const WorldGeometry world = object_geometry_.placed(gpu_scene_.instances());
         if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
-            return frustum::Error{stats.error()};
+            return stats.take_error();
         }
         return {};
     }
@@ -244,7 +244,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
             auto reflection = plan_reflection(*mirror_, cameras.main.pair, frame.width(), frame.height(),
                                               options.mirror_method, bounds_);
             if (!reflection) {
-                return frustum::Error{reflection.error()};
+                return reflection.take_error();
             }
             if (*reflection) {
                 overlays.push_back({(*reflection)->pair, kReflectionFrustumColor});

@@ -30,7 +30,7 @@ frustum::Result<EyeAxes> eye_axes(const frustum::MatrixPair<float>& camera, cons
     if (!frame) {
         return frustum::Error{std::string(where) + ": " + frame.error()};
     }
-    const glm::vec3 forward = glm::normalize(glm::cross(frame->y_axis, frame->x_axis));
+    const glm::vec3 forward = frame->forward();
     return EyeAxes{*frame, forward, glm::dot(frame->center - frame->eye, forward)};
 }
 
@@ -42,14 +42,14 @@ frustum::Result<NonAffineOptions> fit_non_affine(const frustum::MatrixPair<float
     constexpr const char* kWhere = "nonaffine";
     auto axes = eye_axes(camera, kWhere);
     if (!axes) {
-        return frustum::Error{axes.error()};
+        return axes.take_error();
     }
-    const auto camera_planes = frustum::planes(camera);
-    if (!camera_planes.far) {
+    const auto far = frustum::far_distance(camera);
+    if (!far) {
         return frustum::Error{std::string(kWhere) + ": needs a camera with a finite far plane"};
     }
     const float near_m = axes->near_m;
-    const float far_m = std::abs(camera_planes.far->distance(axes->frame.eye));
+    const float far_m = *far;
     const std::string far_text = number_text(far_m) + " m of this camera";
     if (fit.pivot_m && !(*fit.pivot_m < far_m)) {
         return frustum::Error{"--pivot " + number_text(*fit.pivot_m) + " must be less than the far distance " +
@@ -88,7 +88,7 @@ frustum::Result<frustum::Lens<float>> fit_lens(const frustum::MatrixPair<float>&
     }
     auto axes = eye_axes(camera, kWhere);
     if (!axes) {
-        return frustum::Error{axes.error()};
+        return axes.take_error();
     }
     const frustum::NearPlaneFrame<float>& frame = axes->frame;
     frustum::Lens<float> lens;

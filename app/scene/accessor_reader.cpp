@@ -113,7 +113,7 @@ frustum::Result<std::vector<float>> read_floats(const tinygltf::Model& model, in
         return component_as_float(bytes, component_type, normalized);
     });
     if (!status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return values;
 }
@@ -125,7 +125,7 @@ frustum::Result<std::vector<std::uint32_t>> read_uints(const tinygltf::Model& mo
         return component_as_uint(bytes, component_type);
     });
     if (!status) {
-        return frustum::Error{status.error()};
+        return status.take_error();
     }
     return values;
 }

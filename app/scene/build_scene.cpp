@@ -26,7 +26,7 @@ constexpr double kDegenerateLength = 1e-12;
 Result<std::vector<glm::vec4>> read_colors(const tinygltf::Model& model, int accessor) {
     Result<std::vector<float>> values = read_floats(model, accessor);
     if (!values) {
-        return Error{values.error()};
+        return values.take_error();
     }
     const std::size_t components = model.accessors[accessor].type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
     std::vector<glm::vec4> colors(values->size() / components, glm::vec4(1.0f));
@@ -48,7 +48,7 @@ Status read_vectors(const tinygltf::Model& model, const tinygltf::Primitive& pri
     }
     Result<std::vector<float>> values = read_floats(model, attribute->second);
     if (!values) {
-        return Error{values.error()};
+        return values.take_error();
     }
     out.resize(values->size() / N);
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -147,7 +147,7 @@ Status apply_morph(const tinygltf::Model& model, const tinygltf::Primitive& sour
             }
             Result<std::vector<float>> delta = read_floats(model, found->second);
             if (!delta) {
-                return Error{delta.error()};
+                return delta.take_error();
             }
             for (std::size_t v = 0; v < out->size(); ++v) { // counts: validate_morphs
                 (*out)[v] += weight * glm::vec3((*delta)[3 * v], (*delta)[3 * v + 1], (*delta)[3 * v + 2]);
@@ -175,7 +175,7 @@ Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::
     };
     for (Status& status : reads) {
         if (!status) {
-            return Error{status.error()};
+            return status.take_error();
         }
     }
     for (glm::vec2& uv : primitive.texcoords) {
@@ -184,7 +184,7 @@ Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::
     if (auto color = source.attributes.find("COLOR_0"); color != source.attributes.end()) {
         Result<std::vector<glm::vec4>> colors = read_colors(model, color->second);
         if (!colors) {
-            return Error{colors.error()};
+            return colors.take_error();
         }
         primitive.colors = std::move(colors).value();
     }
@@ -202,7 +202,7 @@ Result<Primitive> build_primitive(const tinygltf::Model& model, const tinygltf::
     }
     Result<std::vector<std::uint32_t>> indices = read_uints(model, source.indices);
     if (!indices) {
-        return Error{indices.error()};
+        return indices.take_error();
     }
     for (std::size_t i = 0; i < indices->size(); ++i) {
         if ((*indices)[i] >= vertex_count) {
@@ -228,7 +228,7 @@ Result<Mesh> build_mesh(const tinygltf::Model& model, int index, const std::vect
         const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
         Result<Primitive> primitive = build_primitive(model, source.primitives[p], where, uses, weights);
         if (!primitive) {
-            return Error{primitive.error()};
+            return primitive.take_error();
         }
         mesh.primitives.push_back(std::move(primitive).value());
     }
@@ -284,7 +284,7 @@ Result<Camera> build_camera(const tinygltf::Model& model, int node_index, const 
     camera.node_name = node.name;
     Result<glm::mat4> rigid = rigid_part(world, "camera node " + std::to_string(node_index));
     if (!rigid) {
-        return Error{rigid.error()};
+        return rigid.take_error();
     }
     camera.camera_to_world = *rigid;
     if (source.type == "perspective") {
@@ -374,7 +374,7 @@ Result<std::vector<glm::dmat4>> instance_transforms(const tinygltf::Model& model
         if (attributes.Has(names[a])) {
             Result<std::vector<float>> values = read_floats(model, attributes.Get(names[a]).GetNumberAsInt());
             if (!values) {
-                return Error{values.error()};
+                return values.take_error();
             }
             columns[a] = std::move(values).value();
             count = columns[a].size() / (a == 1 ? 4 : 3);
@@ -430,7 +430,7 @@ public:
         }
         Result<Mesh> built = build_mesh(model_, mesh, uses_, node_weights);
         if (!built) {
-            return Error{built.error()};
+            return built.take_error();
         }
         const int index = static_cast<int>(scene.meshes.size());
         scene.meshes.push_back(std::move(built).value());
@@ -475,21 +475,21 @@ Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& n
         if (node.camera >= 0) {
             Result<Camera> camera = build_camera(model, flat.node, flat.world);
             if (!camera) {
-                return Error{camera.error()};
+                return camera.take_error();
             }
             scene.cameras.push_back(std::move(camera).value());
         }
         if (node.name == "mirror" && !scene.mirror) {
             Result<MirrorRect> mirror = build_mirror(flat.world, instance);
             if (!mirror) {
-                return Error{mirror.error()};
+                return mirror.take_error();
             }
             scene.mirror = *mirror;
         }
         if (node.name == "lens" && !scene.lens) {
             Result<LensSpot> lens = build_lens(flat.world, instance);
             if (!lens) {
-                return Error{lens.error()};
+                return lens.take_error();
             }
             scene.lens = *lens;
         }
@@ -502,7 +502,7 @@ Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& n
 Result<Scene> build_scene(tinygltf::Model&& model, const LoadOptions& options) {
     Result<std::vector<int>> roots = scene_roots(model, options);
     if (!roots) {
-        return Error{roots.error()};
+        return roots.take_error();
     }
     Scene scene;
     for (tinygltf::Image& source : model.images) {
@@ -517,20 +517,20 @@ Result<Scene> build_scene(tinygltf::Model&& model, const LoadOptions& options) {
         scene.materials.push_back(build_material(model, model.materials[m]));
         Result<TexcoordUse> use = texcoord_use(model.materials[m], static_cast<int>(m));
         if (!use) {
-            return Error{use.error()};
+            return use.take_error();
         }
         uses.push_back(*use);
     }
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
         Result<Mesh> mesh = build_mesh(model, static_cast<int>(m), uses, model.meshes[m].weights);
         if (!mesh) {
-            return Error{mesh.error()};
+            return mesh.take_error();
         }
         scene.meshes.push_back(std::move(mesh).value());
     }
     MeshVariants variants(model, uses);
     if (Status placed = place_nodes(model, flatten(model, *roots), variants, scene); !placed) {
-        return Error{placed.error()};
+        return placed.take_error();
     }
     scene.world_bounds = bounds_of(scene);
     return scene;

@@ -68,7 +68,7 @@ frustum::Result<fs::path> FsSandbox::resolve(const std::string& path) const {
 frustum::Result<std::vector<unsigned char>> FsSandbox::read(const std::string& path) const {
     frustum::Result<fs::path> resolved = resolve(path);
     if (!resolved) {
-        return frustum::Error{resolved.error()};
+        return resolved.take_error();
     }
     // Opens the checked, symlink-free path rather than `path` itself.
     std::ifstream file(*resolved, std::ios::binary | std::ios::ate);

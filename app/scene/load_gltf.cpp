@@ -60,7 +60,7 @@ frustum::Result<detail::JsonFacts> preflight(const std::vector<unsigned char>& b
     if (is_glb) {
         frustum::Result<detail::GlbJson> json = detail::check_glb(bytes.data(), bytes.size());
         if (!json) {
-            return Error{json.error()};
+            return json.take_error();
         }
         json_offset = json->offset;
         json_bytes = json->size_bytes;

@@ -39,7 +39,7 @@ struct Maker {
         }
         auto grown = frustum::from_planes_volume_growth(planes, depth); // §4.2, erratum 12
         if (!grown) {
-            return frustum::Error{grown.error()};
+            return grown.take_error();
         }
         return grown->pair;
     }

@@ -97,14 +97,14 @@ frustum::Result<UnitPlanes> unit_planes(const Pair& pair) {
     for (int i = 0; i < 5; ++i) {
         const auto unit = unit_plane(*sides[i].first, names[i]);
         if (!unit) {
-            return frustum::Error{unit.error()};
+            return unit.take_error();
         }
         out.*(sides[i].second) = *unit;
     }
     if (raw.far) {
         const auto unit = unit_plane(*raw.far, "far");
         if (!unit) {
-            return frustum::Error{unit.error()};
+            return unit.take_error();
         }
         out.far = *unit;
     }

@@ -21,7 +21,7 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
         const float aspect = static_cast<float>(width_px) / static_cast<float>(height_px);
         auto pair = orbit_pair(*state.orbit, projection, aspect, bounds);
         if (!pair) {
-            return frustum::Error{pair.error()};
+            return pair.take_error();
         }
         frame.cameras.main = {"orbit", *pair};
     }

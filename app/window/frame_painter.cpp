@@ -15,7 +15,7 @@ constexpr float kInsetBorderColor[4] = {0.95f, 0.95f, 0.95f, 1.0f};
 frustum::Result<FramePainter> FramePainter::create(const gl::Functions& fn) {
     auto text = TextOverlay::create(fn);
     if (!text) {
-        return frustum::Error{text.error()};
+        return text.take_error();
     }
     return FramePainter(fn, std::move(*text));
 }
@@ -73,7 +73,7 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
     }
     auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
     if (!main) {
-        return frustum::Error{main.error()};
+        return main.take_error();
     }
     if (auto status = renderer.render_into(frame.effect, frame.cameras, frame.options, **main); !status) {
         return status;
@@ -84,7 +84,7 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
     if (const auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
         auto inset = sized(inset_target_, rect->width, rect->height, frame.options.msaa_samples);
         if (!inset) {
-            return frustum::Error{inset.error()};
+            return inset.take_error();
         }
         if (auto status = renderer.render_into(inset_effect(frame.effect), frame.cameras, frame.options, **inset);
             !status) {

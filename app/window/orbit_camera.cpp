@@ -35,10 +35,10 @@ OrbitCamera orbit_from_pair(const frustum::MatrixPair<float>& camera, const scen
     const frustum::KeyPoints<float> points = frustum::key_points(camera);
     // The near plane is inward-positive: its normal points along the view.
     const glm::vec3 forward = glm::normalize(frustum::planes(camera).near.normal());
-    const glm::vec4 eye = frustum::to_point(points.eye, tolerance);
-    const bool perspective = eye.w == 1.0f;
+    const auto eye = frustum::eye_point(camera);
+    const bool perspective = eye.has_value();
     // A point on the viewing axis: the eye, or an orthographic frustum's centre.
-    const glm::vec3 on_axis = perspective ? glm::vec3(eye) : glm::vec3(frustum::to_point(points.center, tolerance));
+    const glm::vec3 on_axis = perspective ? *eye : glm::vec3(frustum::to_point(points.center, tolerance));
     const float radius_m = bounds_radius(bounds);
     const float depth_m = glm::dot(bounds_center(bounds) - on_axis, forward);
 

@@ -58,7 +58,7 @@ Result<CullingFrustum<T>> cropped_with_near(const MatrixPair<T>& carried, const 
                                             const CropRect<T>& rect, const char* function) {
     auto cropped = crop(carried, rect);
     if (!cropped) {
-        return Error{std::string("frustum::") + function + "(): " + cropped.error()};
+        return cropped.take_error_in(std::string("frustum::") + function + "()");
     }
     FrustumPlanes<T> p = planes(*cropped);
     p.near = near_plane.normalized();
@@ -72,7 +72,7 @@ Result<CullingFrustum<T>> culling_pair(const MatrixPair<T>& camera, const Plane<
                                        const CropRect<T>& rect) {
     const auto unit = checked_unit_plane(mirror_plane, "culling_pair");
     if (!unit) {
-        return Error{unit.error()};
+        return unit.take_error();
     }
     if (const auto error = detail::eye_in_front(camera, *unit, "culling_pair", "plane",
                                                 "mirror plane must not pass through the eye",
@@ -81,7 +81,7 @@ Result<CullingFrustum<T>> culling_pair(const MatrixPair<T>& camera, const Plane<
     }
     const auto reflected = reflect(camera, *unit);
     if (!reflected) {
-        return Error{reflected.error()};
+        return reflected.take_error();
     }
     return cropped_with_near(*reflected, *unit, rect, "culling_pair");
 }
@@ -91,7 +91,7 @@ Result<CullingFrustum<T>> culling_pair(const MatrixPair<T>& camera, const Frame<
                                        const CropRect<T>& rect) {
     const auto carry = detail::portal_carry(entry, exit, "culling_pair");
     if (!carry) {
-        return Error{carry.error()};
+        return carry.take_error();
     }
     if (const auto error = detail::eye_in_front(camera, frame_plane(entry), "culling_pair", "entry_plane",
                                                 "the eye must not lie in the entry portal's plane",

@@ -1,6 +1,8 @@
 #include "frustum/from_planes.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
 #include "frustum/queries.hpp"
@@ -12,17 +14,9 @@ namespace frustum {
 
 namespace {
 
-// Tolerance for "the side planes meet in one point" (eq. 9), relative to
-// the size of the terms: input planes are often typed or rounded by hand.
-template <class T>
-constexpr T concurrency_tolerance() {
-    return sizeof(T) == sizeof(float) ? T(1e-4) : T(1e-7);
-}
-
 template <class T>
 bool finite_plane(const Plane<T>& p) {
-    return std::isfinite(p.abcd.x) && std::isfinite(p.abcd.y) && std::isfinite(p.abcd.z) &&
-           std::isfinite(p.abcd.w);
+    return detail::finite4(p.abcd);
 }
 
 // Rows m0, m1, m3 of the matrix (m2 still open) and the eye they meet in.
@@ -49,7 +43,7 @@ Result<SideRows<T>> side_rows(const SidePlanes<T>& input, const char* function) 
     // eq. 10 in the inward convention: [-R B T] (K_r, K_b, K_t) = L (xyz).
     const Mat3<T> system(-Vec3<T>(R), Vec3<T>(B), Vec3<T>(Tp)); // columns
     const T det = glm::determinant(system);
-    if (!(std::abs(det) > T(1e-6))) {
+    if (!(std::abs(det) > detail::degenerate_ratio<T>())) {
         return detail::error<T>(function, "right, bottom and top planes do not span space (two are parallel)",
                                 {{"determinant", det}});
     }
@@ -66,7 +60,7 @@ Result<SideRows<T>> side_rows(const SidePlanes<T>& input, const char* function) 
     // eq. 9: the four side planes meet in one point iff the w parts agree too.
     const T residual = -k_r * R.w + k_b * B.w + k_t * Tp.w - L.w;
     const T size = T(1) + std::abs(k_r * R.w) + std::abs(k_b * B.w) + std::abs(k_t * Tp.w) + std::abs(L.w);
-    if (!(std::abs(residual) <= concurrency_tolerance<T>() * size)) {
+    if (!(std::abs(residual) <= detail::concurrency_tolerance<T>() * size)) {
         return detail::error<T>(function, "side planes do not meet in one point (eq. 9)",
                                 {{"residual", residual}});
     }
@@ -90,7 +84,7 @@ Result<SideRows<T>> side_rows(const SidePlanes<T>& input, const char* function) 
                                       "eye=" + detail::vector_text(Vec3<T>(eye)) +
                                           " distance=" + detail::number(eye_distance));
         }
-    } else if (!(std::abs(glm::dot(rows.near.normal(), Vec3<T>(eye))) > T(1e-6))) {
+    } else if (!(std::abs(glm::dot(rows.near.normal(), Vec3<T>(eye))) > detail::degenerate_ratio<T>())) {
         return detail::error_text(function, "near plane is parallel to the projection direction",
                                   "direction=" + detail::vector_text(Vec3<T>(eye)));
     }
@@ -119,7 +113,7 @@ bool far_corners_in_front(const MatrixPair<T>& pair) {
     const KeyPoints<T> points = key_points(pair);
     for (int i = 4; i < 8; ++i) {
         const Vec4<T>& c = points.corners[i];
-        if (!(c.w > T(1e-6) * glm::length(Vec3<T>(c)))) {
+        if (!(c.w > detail::degenerate_ratio<T>() * glm::length(Vec3<T>(c)))) {
             return false;
         }
     }
@@ -134,7 +128,7 @@ namespace {
 template <class T>
 Result<T> k_near_through(const SideRows<T>& rows, const Vec3<T>& far_point, DepthRange depth) {
     const Vec4<T> q(far_point, T(1));
-    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) {
+    if (!detail::finite3(far_point)) {
         return detail::error_text("from_planes", "far point must be finite", detail::vector_text(far_point));
     }
     const T in_front = glm::dot(rows.m3, q); // clip w of Q
@@ -172,7 +166,7 @@ Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector
                                   DepthRange depth) {
     const auto rows = side_rows(planes, "from_planes");
     if (!rows) {
-        return Error{rows.error()};
+        return rows.take_error();
     }
     if (far_points.empty()) {
         return detail::error_text("from_planes", "needs at least one far point", "none");
@@ -182,7 +176,7 @@ Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector
     for (const Vec3<T>& point : far_points) {
         const auto k = k_near_through(*rows, point, depth);
         if (!k) {
-            return Error{k.error()};
+            return k.take_error();
         }
         k_near = std::min(k_near, *k);
     }
@@ -194,7 +188,7 @@ Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>& planes, D
                                                   int max_iterations) {
     const auto rows = side_rows(planes, "from_planes_volume_growth");
     if (!rows) {
-        return Error{rows.error()};
+        return rows.take_error();
     }
     const Vec4<T> n = rows->near.abcd;
     // eq. 13 (|N.xyz| = 1 after normalization): F perpendicular to N.

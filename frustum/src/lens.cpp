@@ -19,42 +19,12 @@ Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens) {
     return lens.center_m + (lens.radius_m * std::pow(r, lens.power) / length) * v; // C + R r^p v / |v|
 }
 
-template <class T>
-Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
-    const KeyPoints<T> k = key_points(camera);
-    const T tolerance = infinity_tolerance<T>();
-    const Vec4<T> eye = to_point(k.eye, tolerance);
-    if (eye.w != T(1)) {
-        return detail::error_text("near_plane_frame", "needs a perspective camera (finite eye)", "");
-    }
-    Vec3<T> c[4];
-    for (int i = 0; i < 4; ++i) {
-        const Vec4<T> p = to_point(k.corners[i], tolerance);
-        if (p.w != T(1)) {
-            return detail::error<T>("near_plane_frame", "near corner is not a finite point", {{"corner", T(i + 1)}});
-        }
-        c[i] = Vec3<T>(p);
-    }
-    NearPlaneFrame<T> frame;
-    frame.center = (c[0] + c[1] + c[2] + c[3]) / T(4);
-    const Vec3<T> half_x = (c[0] - c[1]) / T(2); // C1 - C2: along +x
-    const Vec3<T> half_y = (c[0] - c[3]) / T(2); // C1 - C4: along +y
-    frame.half_width_m = glm::length(half_x);
-    frame.half_height_m = glm::length(half_y);
-    frame.x_axis = half_x / frame.half_width_m;
-    frame.y_axis = half_y / frame.half_height_m;
-    frame.eye = Vec3<T>(eye);
-    return frame;
-}
-
 namespace {
 
-// The plane through the eye and two points, positive on the side of `inside`.
+// The plane through the eye and two points, unit normal, positive on the side of `inside`.
 template <class T>
 Plane<T> side_plane(const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
-    const Vec3<T> normal = glm::normalize(glm::cross(a - eye, b - eye));
-    Plane<T> plane(Vec4<T>(normal, -glm::dot(normal, eye)));
-    return plane.distance(inside) >= T(0) ? plane : plane.flipped();
+    return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye).facing(inside);
 }
 
 } // namespace
@@ -70,11 +40,11 @@ Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<
     }
     auto layout = crop_tiles(camera, width_px, height_px, columns, rows);
     if (!layout) {
-        return Error{layout.error()};
+        return layout.take_error();
     }
     const auto frame = near_plane_frame(camera);
     if (!frame) {
-        return Error{"frustum::lens_tiles(): " + frame.error()};
+        return frame.take_error_in("frustum::lens_tiles()");
     }
     const auto camera_planes = planes(camera);
     if (!camera_planes.far) {
@@ -121,7 +91,6 @@ Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<
 
 #define FRUSTUM_INSTANTIATE(T)                                                                             \
     template Vec2<T> lens_warp(const Vec2<T>&, const Lens<T>&);                                            \
-    template Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>&);                             \
     template Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>&, const Lens<T>&, int, int, int, int);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)

@@ -27,11 +27,11 @@ template <class T>
 Result<RigidTransform<T>> portal_carry(const Frame<T>& entry, const Frame<T>& exit, const char* function) {
     const auto f_entry = frame_to_world(entry, function, "entry");
     if (!f_entry) {
-        return Error{f_entry.error()};
+        return f_entry.take_error();
     }
     const auto f_exit = frame_to_world(exit, function, "exit");
     if (!f_exit) {
-        return Error{f_exit.error()};
+        return f_exit.take_error();
     }
     // T = F_entry H F_exit^-1, T^-1 = F_exit H F_entry^-1.
     return *f_entry * half_turn<T>() * inverse(*f_exit);
@@ -51,7 +51,7 @@ template <class T>
 Result<MatrixPair<T>> portal(const MatrixPair<T>& pair, const Frame<T>& entry, const Frame<T>& exit) {
     const auto carry = detail::portal_carry(entry, exit, "portal");
     if (!carry) {
-        return Error{carry.error()};
+        return carry.take_error();
     }
     if (const auto error = detail::eye_in_front(pair, frame_plane(entry), "portal", "entry_plane",
                                                 "the eye must not lie in the entry portal's plane",
@@ -61,7 +61,7 @@ Result<MatrixPair<T>> portal(const MatrixPair<T>& pair, const Frame<T>& entry, c
     const MatrixPair<T> carried = compose(pair, *carry); // M T, T^-1 M^-1
     auto clipped = clip_oblique(carried, frame_plane(exit));
     if (!clipped) {
-        return Error{"frustum::portal(): " + clipped.error()};
+        return clipped.take_error_in("frustum::portal()");
     }
     return clipped;
 }

@@ -1,8 +1,11 @@
 #include "frustum/projection.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
+#include "frustum/matrix_rows.hpp"
 
 #include <cmath>
 #include <limits>
@@ -11,10 +14,7 @@ namespace frustum {
 
 namespace {
 
-template <class T>
-bool finite(T v) {
-    return std::isfinite(v);
-}
+using detail::finite;
 
 // Depth row coefficients: clip z = A z_eye + B (perspective, w = -z_eye).
 template <class T>
@@ -60,7 +60,7 @@ Result<MatrixPair<T>> perspective(T fovy_rad, T aspect, T near_m, std::optional<
     auto pair = off_axis(-right, right, -top, top, near_m, far_m, depth);
     if (!pair) {
         // Only representability can fail here; say which call the user made.
-        return Error{"frustum::perspective(): " + pair.error()};
+        return pair.take_error_in("frustum::perspective()");
     }
     return pair;
 }
@@ -98,24 +98,17 @@ Result<MatrixPair<T>> off_axis(T left, T right, T bottom, T top, T near_m, std::
                                 {{"near", near_m}, {"far", far_m.value_or(std::numeric_limits<T>::infinity())}});
     }
 
-    Mat4<T> m(T(0)); // m[column][row]
-    m[0][0] = sx;
-    m[1][1] = sy;
-    m[2][0] = cx;
-    m[2][1] = cy;
-    m[2][2] = a;
-    m[2][3] = T(-1);
-    m[3][2] = b;
-
-    // Closed form: z = -W, w = (Z + A W)/B, x = (X + cx W)/sx, y = (Y + cy W)/sy.
-    Mat4<T> inv(T(0));
-    inv[0][0] = T(1) / sx;
-    inv[3][0] = cx / sx;
-    inv[1][1] = T(1) / sy;
-    inv[3][1] = cy / sy;
-    inv[3][2] = T(-1);
-    inv[2][3] = T(1) / b;
-    inv[3][3] = a / b;
+    // The matrix drawn in projection.hpp, and its closed-form inverse:
+    // z = -W, w = (Z + A W)/B, x = (X + cx W)/sx, y = (Y + cy W)/sy.
+    const T o = T(0), one = T(1);
+    const Mat4<T> m = from_rows<T>({sx, o, cx, o},
+                                   {o, sy, cy, o},
+                                   {o, o, a, b},
+                                   {o, o, -one, o});
+    const Mat4<T> inv = from_rows<T>({one / sx, o, o, cx / sx},
+                                     {o, one / sy, o, cy / sy},
+                                     {o, o, o, -one},
+                                     {o, o, one / b, a / b});
     return detail::PairFactory::make(m, inv, depth, false);
 }
 
@@ -149,21 +142,16 @@ Result<MatrixPair<T>> orthographic(T left, T right, T bottom, T top, T near_m, T
                                 {{"near", near_m}, {"far", far_m}});
     }
 
-    Mat4<T> m(T(1));
-    m[0][0] = sx;
-    m[1][1] = sy;
-    m[2][2] = a;
-    m[3][0] = tx;
-    m[3][1] = ty;
-    m[3][2] = b;
-
-    Mat4<T> inv(T(1));
-    inv[0][0] = T(1) / sx;
-    inv[1][1] = T(1) / sy;
-    inv[2][2] = T(1) / a;
-    inv[3][0] = -tx / sx;
-    inv[3][1] = -ty / sy;
-    inv[3][2] = -b / a;
+    // The box matrix (scale and shift per axis) and its closed-form inverse.
+    const T o = T(0), one = T(1);
+    const Mat4<T> m = from_rows<T>({sx, o, o, tx},
+                                   {o, sy, o, ty},
+                                   {o, o, a, b},
+                                   {o, o, o, one});
+    const Mat4<T> inv = from_rows<T>({one / sx, o, o, -tx / sx},
+                                     {o, one / sy, o, -ty / sy},
+                                     {o, o, one / a, -b / a},
+                                     {o, o, o, one});
     return detail::PairFactory::make(m, inv, depth, false);
 }
 
@@ -180,8 +168,7 @@ RigidTransform<T> RigidTransform<T>::from_rotation_translation(const Mat3<T>& ro
 
 template <class T>
 Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, const Vec3<T>& up) {
-    const auto all_finite = [](const Vec3<T>& v) { return finite(v.x) && finite(v.y) && finite(v.z); };
-    if (!all_finite(eye) || !all_finite(target) || !all_finite(up)) {
+    if (!detail::finite3(eye) || !detail::finite3(target) || !detail::finite3(up)) {
         return detail::error_text("look_at", "eye, target and up must be finite",
                                   detail::vector_text(eye) + " " + detail::vector_text(target) + " " +
                                       detail::vector_text(up));
@@ -199,7 +186,7 @@ Result<RigidTransform<T>> look_at(const Vec3<T>& eye, const Vec3<T>& target, con
     const Vec3<T> side_unnormalized = glm::cross(forward, up);
     const T side_length = glm::length(side_unnormalized);
     const T up_length = glm::length(up);
-    if (!(side_length > T(1e-6) * up_length) || !(up_length > T(0))) {
+    if (!(side_length > detail::degenerate_ratio<T>() * up_length) || !(up_length > T(0))) {
         return detail::error_text("look_at", "up must be non-zero and not parallel to the viewing direction",
                                   "up=" + detail::vector_text(up) + " direction=" + detail::vector_text(forward));
     }

@@ -1,5 +1,8 @@
 #include "frustum/queries.hpp"
 
+#include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,7 +23,7 @@ FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
     const Plane<T> far(s * (clip_z_far<T>(depth) * m3 - m2));
     // An infinite far plane has a (numerically) zero normal: erratum 9.
     const T scale = glm::length(Vec3<T>(m3)) + glm::length(Vec3<T>(m2));
-    if (glm::length(far.normal()) > T(64) * std::numeric_limits<T>::epsilon() * scale) {
+    if (glm::length(far.normal()) > detail::rounding_floor<T>() * scale) {
         p.far = far;
     }
     return p;
@@ -94,13 +97,76 @@ Vec4<T> to_point(const Vec4<T>& h, T relative_tolerance) {
     return Vec4<T>(xyz / length, T(0));
 }
 
+template <class T>
+std::optional<Vec3<T>> eye_point(const MatrixPair<T>& pair) {
+    const Vec4<T> eye = to_point(key_points(pair).eye, infinity_tolerance<T>());
+    if (eye.w != T(1)) {
+        return std::nullopt;
+    }
+    return Vec3<T>(eye);
+}
+
+template <class T>
+Result<T> near_distance(const MatrixPair<T>& pair) {
+    const auto eye = eye_point(pair);
+    if (!eye) {
+        return detail::error_text("near_distance", "needs a perspective camera (finite eye)", "");
+    }
+    return std::abs(planes(pair).near.distance(*eye));
+}
+
+template <class T>
+Result<T> far_distance(const MatrixPair<T>& pair) {
+    const auto eye = eye_point(pair);
+    if (!eye) {
+        return detail::error_text("far_distance", "needs a perspective camera (finite eye)", "");
+    }
+    const auto all = planes(pair);
+    if (!all.far) {
+        return detail::error_text("far_distance", "needs a finite far plane", "");
+    }
+    return std::abs(all.far->distance(*eye));
+}
+
+template <class T>
+Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
+    const auto eye = eye_point(camera);
+    if (!eye) {
+        return detail::error_text("near_plane_frame", "needs a perspective camera (finite eye)", "");
+    }
+    const KeyPoints<T> k = key_points(camera);
+    const T tolerance = infinity_tolerance<T>();
+    Vec3<T> c[4];
+    for (int i = 0; i < 4; ++i) {
+        const Vec4<T> p = to_point(k.corners[i], tolerance);
+        if (p.w != T(1)) {
+            return detail::error<T>("near_plane_frame", "near corner is not a finite point", {{"corner", T(i + 1)}});
+        }
+        c[i] = Vec3<T>(p);
+    }
+    NearPlaneFrame<T> frame;
+    frame.center = (c[0] + c[1] + c[2] + c[3]) / T(4);
+    const Vec3<T> half_x = (c[0] - c[1]) / T(2); // C1 - C2: along +x
+    const Vec3<T> half_y = (c[0] - c[3]) / T(2); // C1 - C4: along +y
+    frame.half_width_m = glm::length(half_x);
+    frame.half_height_m = glm::length(half_y);
+    frame.x_axis = half_x / frame.half_width_m;
+    frame.y_axis = half_y / frame.half_height_m;
+    frame.eye = *eye;
+    return frame;
+}
+
 #define FRUSTUM_INSTANTIATE(T)                                              \
     template FrustumPlanes<T> raw_planes(const MatrixPair<T>&);             \
     template FrustumPlanes<T> planes(const MatrixPair<T>&);                 \
     template DivisionPlanes<T> division_planes(const MatrixPair<T>&);       \
     template Vec4<T> clip_corner<T>(int, DepthRange);                       \
     template KeyPoints<T> key_points(const MatrixPair<T>&);                 \
-    template Vec4<T> to_point(const Vec4<T>&, T);
+    template Vec4<T> to_point(const Vec4<T>&, T);                            \
+    template std::optional<Vec3<T>> eye_point(const MatrixPair<T>&);         \
+    template Result<T> near_distance(const MatrixPair<T>&);                  \
+    template Result<T> far_distance(const MatrixPair<T>&);                   \
+    template Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>&);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)
 

@@ -47,7 +47,7 @@ Result<Plane<T>> plane_from_point_normal(const Vec3<T>& point, const Vec3<T>& no
     }
     const Vec3<T> scaled = normal / largest;
     const Vec3<T> unit = scaled / glm::length(scaled);
-    return Plane<T>(Vec4<T>(unit, -glm::dot(unit, point)));
+    return Plane<T>::at(unit, point);
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                                    \

@@ -2,6 +2,7 @@
 
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/finite.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/projection.hpp"
 
 #include <cmath>
@@ -34,9 +35,9 @@ Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, co
     const Vec3<T> vn = glm::normalize(glm::cross(vr, vu));
     const Vec3<T> va = pa - pe, vb = pb - pe, vc = pc - pe;
     const T distance = glm::dot(vn, pe - pa);
-    if (!(distance > T(1e-6) * (width + height))) {
+    if (!(distance > detail::degenerate_ratio<T>() * (width + height))) {
         return detail::error<T>("screen_projection",
-                                std::abs(distance) <= T(1e-6) * (width + height)
+                                std::abs(distance) <= detail::degenerate_ratio<T>() * (width + height)
                                     ? "eye must not lie in the screen's plane"
                                     : "eye must be in front of the screen (the side (lower_right - lower_left) x "
                                       "(upper_left - lower_left) points to)",
@@ -50,7 +51,7 @@ Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, co
     const T bottom = glm::dot(vu, va) * scale, top = glm::dot(vu, vc) * scale;
     auto projection = off_axis(left, right, bottom, top, near_m, far_m, depth);
     if (!projection) {
-        return Error{"frustum::screen_projection(): " + projection.error()};
+        return projection.take_error_in("frustum::screen_projection()");
     }
     // Rows of the view rotation are vr, vu, vn (Kooima's M^T), then -pe.
     Mat3<T> rotation;

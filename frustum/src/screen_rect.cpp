@@ -1,6 +1,7 @@
 #include "frustum/screen_rect.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/queries.hpp"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ Result<std::optional<CropRect<T>>> screen_rect(const MatrixPair<T>& pair, const 
     clip.reserve(polygon.size() + 6);
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const Vec3<T>& p = polygon[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        if (!detail::finite3(p)) {
             return detail::error_text("screen_rect", "polygon points must be finite",
                                       "point " + std::to_string(i) + "=" + detail::vector_text(p));
         }

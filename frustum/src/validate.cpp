@@ -1,5 +1,7 @@
 #include "frustum/validate.hpp"
 
+#include "frustum/detail/tolerances.hpp"
+
 #include "frustum/queries.hpp"
 
 #include <cmath>
@@ -44,7 +46,7 @@ Validation validate(const MatrixPair<T>& pair) {
         perimeter += glm::length(side_in);
     }
     result.near_quad_convex = true;
-    const T area_floor = T(64) * std::numeric_limits<T>::epsilon() * perimeter * perimeter;
+    const T area_floor = detail::rounding_floor<T>() * perimeter * perimeter;
     for (const Vec3<T>& turn : turns) {
         if (!(glm::dot(turn, turn_sum) > area_floor * glm::length(turn_sum))) {
             result.near_quad_convex = false;

@@ -1,6 +1,7 @@
 #include "frustum/volume_approximation.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/finite.hpp"
 #include "frustum/reflect.hpp"
 
@@ -42,25 +43,16 @@ template <class T>
 bool intersect3(const Plane<T>& a, const Plane<T>& b, const Plane<T>& c, Vec3<T>& out) {
     const Mat3<T> rows_t(a.normal(), b.normal(), c.normal()); // columns = normals
     const T det = glm::determinant(rows_t);
-    if (!(std::abs(det) > T(1e-9))) {
+    if (!(std::abs(det) > detail::corner_determinant_floor<T>())) {
         return false;
     }
     // Solve n_k . x = -d_k: x = (-(d_a) (b x c) - d_b (c x a) - d_c (a x b)) / det
     out = (-a.offset() * glm::cross(b.normal(), c.normal()) - b.offset() * glm::cross(c.normal(), a.normal()) -
            c.offset() * glm::cross(a.normal(), b.normal())) /
           det;
-    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+    return detail::finite3(out);
 }
 
-// The plane through the origin and two points, positive on the side of
-// `inside`; a zero normal (origin on the line through a and b) stays zero and
-// is refused by from_planes.
-template <class T>
-Plane<T> through(const Vec3<T>& origin, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
-    const Vec3<T> normal = glm::cross(a - origin, b - origin);
-    Plane<T> plane(Vec4<T>(normal, -glm::dot(normal, origin)));
-    return plane.distance(inside) >= T(0) ? plane : plane.flipped();
-}
 
 // The target must be finite, its side normals non-zero, its near plane a
 // plane, and X0..X3 a quadrilateral with no zero-length side.
@@ -100,7 +92,7 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
         return detail::error<T>("fit_volume", "far distance must be > 0 and finite", {{"far", far_distance_m}});
     }
     if (const Status s = check_target(target); !s) {
-        return Error{s.error()};
+        return s.take_error();
     }
     const Plane<T> near = target.near.normalized();
     Vec3<T> centroid(T(0));
@@ -134,7 +126,7 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
             const Vec3<T> candidate = origin + step * gradient;
             Vec3<T> candidate_gradient;
             const T candidate_value = volume_objective(target, candidate, &candidate_gradient);
-            if (near.distance(candidate) < T(0) && candidate_value >= value + T(1e-4) * step * g2) {
+            if (near.distance(candidate) < T(0) && candidate_value >= value + detail::sufficient_increase<T>() * step * g2) {
                 const T gain = candidate_value - value;
                 origin = candidate;
                 value = candidate_value;
@@ -152,8 +144,11 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
 
     // The frustum through O and X0..X3 (§4 from planes).
     const auto& x = target.near_points;
-    const SidePlanes<T> planes{through(origin, x[3], x[0], centroid), through(origin, x[1], x[2], centroid),
-                               through(origin, x[2], x[3], centroid), through(origin, x[0], x[1], centroid), near};
+    // Each side plane through the origin and two near points, positive on the
+    // centroid's side; a zero normal (origin on the line through the two
+    // points) stays zero and is refused by from_planes.
+    const auto side = [&](const Vec3<T>& a, const Vec3<T>& b) { return Plane<T>::through(origin, a, b).facing(centroid); };
+    const SidePlanes<T> planes{side(x[3], x[0]), side(x[1], x[2]), side(x[2], x[3]), side(x[0], x[1]), near};
     // Far plane: the nearest that keeps each edge from O through X_i inside
     // up to far_distance_m beyond X_i (one far point on the axis tilts it into
     // the volume when the patch is far from a parallelogram).
@@ -168,7 +163,7 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
     }
     auto pair = from_planes(planes, far_points, depth);
     if (!pair) {
-        return Error{"frustum::fit_volume(): " + pair.error()};
+        return pair.take_error_in("frustum::fit_volume()");
     }
     return VolumeFit<T>{origin, value, iterations, std::move(pair).value()};
 }

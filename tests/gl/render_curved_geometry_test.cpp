@@ -25,9 +25,9 @@ render::CurvedMirror cap(double sagitta_m, render::CapShape shape = render::CapS
 
 glm::dvec3 main_eye() {
     const auto cameras = render_test::showcase_cameras();
-    const glm::vec4 eye = frustum::to_point(frustum::key_points(cameras.main.pair).eye, 1e-6f);
-    REQUIRE(eye.w == 1.0f);
-    return glm::dvec3(glm::vec3(eye));
+    const auto eye = frustum::eye_point(cameras.main.pair);
+    REQUIRE(eye.has_value());
+    return glm::dvec3(*eye);
 }
 
 render::CurvedPlan plan(const render::CurvedMirror& mirror, int grid) {

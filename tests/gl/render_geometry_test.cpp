@@ -36,10 +36,9 @@ TEST_CASE("cameras are found by name, node name or index, and placed by their no
     CHECK(missing.error() == "render::find_camera(): no camera '2'; the scene's cameras are: main, overview");
     // The view is the closed-form inverse of camera_to_world: the eye read
     // back from the pair (§3.2, O = m2') is the camera node's translation.
-    const glm::vec4 eye =
-        frustum::to_point(frustum::key_points(render_test::showcase_cameras().main.pair).eye, 1e-6f);
-    CHECK(eye.w == 1.0f);
-    CHECK(glm::distance(glm::vec3(eye), glm::vec3(0.8f, 1.7f, 6.5f)) < 1e-4f);
+    const auto eye = frustum::eye_point(render_test::showcase_cameras().main.pair);
+    REQUIRE(eye.has_value());
+    CHECK(glm::distance(*eye, glm::vec3(0.8f, 1.7f, 6.5f)) < 1e-4f);
 }
 
 TEST_CASE("a reflection texel is the screen pixel it lies under") {

@@ -14,12 +14,12 @@ namespace {
 glm::dmat4 paper_crop_mat(const CropRect<double>& r) {
     const double x = r.x / r.width, y = r.y / r.height;
     const double w = r.full_width / r.width, h = r.full_height / r.height;
-    return mat_rows<double>({w, 0, 0, 0}, {0, h, 0, 0}, {0, 0, 1, 0}, {w - 1 - 2 * x, h - 1 - 2 * y, 0, 1});
+    return from_rows<double>({w, 0, 0, 0}, {0, h, 0, 0}, {0, 0, 1, 0}, {w - 1 - 2 * x, h - 1 - 2 * y, 0, 1});
 }
 glm::dmat4 paper_inv_crop_mat(const CropRect<double>& r) {
     const double x = r.x / r.width, y = r.y / r.height;
     const double rw = r.width / r.full_width, rh = r.height / r.full_height;
-    return mat_rows<double>({rw, 0, 0, 0}, {0, rh, 0, 0}, {0, 0, 1, 0},
+    return from_rows<double>({rw, 0, 0, 0}, {0, rh, 0, 0}, {0, 0, 1, 0},
                             {-1 + rw + 2 * x * rw, -1 + rh + 2 * y * rh, 0, 1});
 }
 

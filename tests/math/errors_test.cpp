@@ -158,7 +158,7 @@ TEST_CASE_TEMPLATE("look_at and from_matrix: degenerate input", T, float, double
     CHECK(zero.error() == "frustum::from_matrix(): matrix is singular or too ill-conditioned to invert, got "
                           "largest_entry=0");
     // Rank 3: row 3 = row 0 + row 1.
-    const Mat4<T> rank3 = mat_rows<T>({1, 2, 0, 0}, {0, 1, 3, 0}, {0, 0, 1, 4}, {1, 3, 3, 0});
+    const Mat4<T> rank3 = from_rows<T>({1, 2, 0, 0}, {0, 1, 3, 0}, {0, 0, 1, 4}, {1, 3, 3, 0});
     CHECK(has(frustum::from_matrix(rank3, DepthRange::ZeroToOne).error(), "singular or too ill-conditioned"));
     // Nearly singular (relative 1e-9 in double, 1e-5 in float).
     Mat4<T> nearly = rank3;

@@ -41,9 +41,7 @@ void check_edges_reach_far(const MatrixPair<double>& camera, const Lens<double>&
     REQUIRE(frame.ok());
     const auto tiles = lens_tiles(camera, lens, 256, 256, 8, 8);
     REQUIRE(tiles.ok());
-    const auto camera_planes = planes(camera);
-    const double far_ratio =
-        std::abs(camera_planes.far->distance(frame->eye)) / std::abs(camera_planes.near.distance(frame->eye));
+    const double far_ratio = far_distance(camera).value() / near_distance(camera).value();
     const double z_near = clip_z_near<double>(camera.depth()), z_far = clip_z_far<double>(camera.depth());
     for (const auto& tile : *tiles) {
         const auto k = key_points(tile.pair);

@@ -44,7 +44,7 @@ TEST_CASE_TEMPLATE("mirror_rectangle, eye on the mirror's axis: literal matrix, 
         frustum::mirror_rectangle(square_mirror<T>(), Vec3<T>(0, 0, 2), T(20), MirrorFit::Paper, DepthRange::ZeroToOne);
     REQUIRE_MESSAGE(exact.ok(), exact.error());
     REQUIRE_MESSAGE(paper.ok(), paper.error());
-    const Mat4<T> expected = mat_rows<T>({-2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, T(10.0 / 9), 0}, {0, 0, 1, 2});
+    const Mat4<T> expected = from_rows<T>({-2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, T(10.0 / 9), 0}, {0, 0, 1, 2});
     CHECK(exact->matrix() == close(expected, tight<T>()));
     CHECK(paper->matrix() == close(expected, tight<T>()));
     CHECK(inverse_residual(*exact) <= 64 * eps<T>());

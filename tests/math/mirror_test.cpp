@@ -26,7 +26,7 @@ TEST_CASE_TEMPLATE("mirror of the landmark in the plane z = -5: literal matrix",
     REQUIRE(base.ok());
     const auto m = frustum::mirror(*base, Plane<T>(0, 0, 1, 5));
     REQUIRE_MESSAGE(m.ok(), m.error());
-    CHECK(m->matrix() == close(mat_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 2, 10}, {0, 0, 1, 10}), tight<T>()));
+    CHECK(m->matrix() == close(from_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 2, 10}, {0, 0, 1, 10}), tight<T>()));
     CHECK(m->flips_winding());
     CHECK(inverse_residual(*m) <= 64 * eps<T>());
     // The same through other paths, in every depth range: reflect the

@@ -178,7 +178,7 @@ TEST_CASE("planes() of an imported matrix whose left plane is the plane at infin
     // KNOWN LIBRARY PROBLEM when this fails. Skipped under the sanitizers,
     // where that float division by zero traps and would abort the suite.
     const auto pair = frustum::from_matrix<double>(
-        mat_rows<double>({0, 0, 1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, -1, 1}), DepthRange::ZeroToOne);
+        from_rows<double>({0, 0, 1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, -1, 1}), DepthRange::ZeroToOne);
     REQUIRE(pair.ok());
     CHECK_FALSE(frustum::validate(*pair).valid());
     CHECK(frustum::raw_planes(*pair).left.is_degenerate(1e-12));

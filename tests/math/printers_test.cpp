@@ -45,8 +45,8 @@ TEST_CASE("tolerance helpers compare what they say") {
     CHECK_FALSE(glm::dvec4(1, 2, 3, 4.6) == close_abs(glm::dvec4(1, 2, 3, 4), 0.5));
     CHECK_FALSE(glm::dvec4(1, 2, std::nan(""), 4) == close_abs(glm::dvec4(1, 2, 3, 4), 1e9));
     // inverse_residual is 0 for an exact pair and grows with a bad entry.
-    const glm::dmat4 a = mat_rows<double>({2, 0, 0, 0}, {0, 4, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1});
-    const glm::dmat4 inv = mat_rows<double>({0.5, 0, 0, 0}, {0, 0.25, 0, 0}, {0, 0, 1, -1}, {0, 0, 0, 1});
+    const glm::dmat4 a = from_rows<double>({2, 0, 0, 0}, {0, 4, 0, 0}, {0, 0, 1, 1}, {0, 0, 0, 1});
+    const glm::dmat4 inv = from_rows<double>({0.5, 0, 0, 0}, {0, 0.25, 0, 0}, {0, 0, 1, -1}, {0, 0, 0, 1});
     CHECK(inverse_residual(a, inv) == 0);
     glm::dmat4 off = inv;
     off[3][2] = -1 + 1e-9;

@@ -11,7 +11,7 @@ TEST_CASE_TEMPLATE("reflection_matrix: literal for the plane y = 2, involution, 
     // I - 2 n n^T = diag(1, -1, 1), translation -2 d n = (0, 4, 0):
     // y -> 4 - y.
     const Mat4<T> r = frustum::reflection_matrix(Plane<T>(0, 1, 0, -2));
-    CHECK(r == mat_rows<T>({1, 0, 0, 0}, {0, -1, 0, 4}, {0, 0, 1, 0}, {0, 0, 0, 1}));
+    CHECK(r == from_rows<T>({1, 0, 0, 0}, {0, -1, 0, 4}, {0, 0, 1, 0}, {0, 0, 0, 1}));
     CHECK(Vec4<T>(r * Vec4<T>(3, 5, 7, 1)) == Vec4<T>(3, -1, 7, 1));
 
     Random rng(81);

@@ -57,7 +57,7 @@ TEST_CASE_TEMPLATE("validate: a bow-tie near face is not convex", T, float, doub
     //   C1 = (2/3, 2/3, 0), C2 = (2, -2, 0), C3 = (2, 2, 0), C4 = (2/3, -2/3, 0):
     // the sides C1C2 and C3C4 cross, a self-intersecting quad. The centre
     // of the near face has w = 0.5 > 0, so no sign flip on import.
-    const Mat4<T> inv = mat_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, T(0.5)});
+    const Mat4<T> inv = from_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, T(0.5)});
     const auto pair = from_inverse(inv, DepthRange::ZeroToOne);
     REQUIRE_MESSAGE(pair.ok(), pair.error());
     const auto k = frustum::key_points(*pair);
@@ -71,7 +71,7 @@ TEST_CASE_TEMPLATE("validate: a bow-tie near face is not convex", T, float, doub
 
 TEST_CASE_TEMPLATE("validate: a near corner at infinity", T, float, double) {
     // world w = x_clip + 1: C2 = (-1, 1, 0, 1) and C3 get w = 0.
-    const Mat4<T> inv = mat_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 1});
+    const Mat4<T> inv = from_rows<T>({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 1});
     const auto pair = from_inverse(inv, DepthRange::ZeroToOne);
     REQUIRE_MESSAGE(pair.ok(), pair.error());
     const frustum::Validation v = frustum::validate(*pair);

@@ -8,6 +8,7 @@
 #include "frustum/jitter.hpp"
 #include "frustum/lens.hpp"
 #include "frustum/matrix_pair.hpp"
+#include "frustum/matrix_rows.hpp"
 #include "frustum/mirror.hpp"
 #include "frustum/non_affine.hpp"
 #include "frustum/oblique_clip.hpp"

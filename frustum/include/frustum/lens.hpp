@@ -9,6 +9,7 @@
 
 #include "frustum/crop.hpp"
 #include "frustum/matrix_pair.hpp"
+#include "frustum/queries.hpp"
 #include "frustum/result.hpp"
 
 #include <vector>
@@ -29,16 +30,7 @@ struct Lens {
 template <class T>
 Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens);
 
-// The near-plane frame of a perspective camera: centre, unit axes and half
-// sizes (metres), from its near corners C1..C4 (§3.2).
-template <class T>
-struct NearPlaneFrame {
-    Vec3<T> center, x_axis, y_axis, eye;
-    T half_width_m, half_height_m;
-    Vec3<T> point(const Vec2<T>& plane_m) const { return center + plane_m.x * x_axis + plane_m.y * y_axis; }
-};
-template <class T>
-Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera);
+// near_plane_frame() (the refraction plane's frame) is in queries.hpp.
 
 // Tiles of a width_px x height_px image in the crop_tiles() layout, each
 // with its lens frustum. Far plane of a tile: the nearest that keeps its four

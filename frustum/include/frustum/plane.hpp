@@ -20,6 +20,18 @@ struct Plane {
     explicit Plane(const Vec4<T>& coefficients) : abcd(coefficients) {}
     Plane(T a, T b, T c, T d) : abcd(a, b, c, d) {}
 
+    // The plane with this normal (any length) through `point`, unchecked;
+    // for user input use plane_from_point_normal (rigid.hpp: checked, unit).
+    static Plane at(const Vec3<T>& normal, const Vec3<T>& point) {
+        return Plane(Vec4<T>(normal, -glm::dot(normal, point)));
+    }
+    // The plane through three points, normal (b - a) x (c - a), not
+    // normalized: positive on the side from which a, b, c turn
+    // counter-clockwise. Zero normal when the points are collinear.
+    static Plane through(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+        return at(glm::cross(b - a, c - a), a);
+    }
+
     Vec3<T> normal() const { return Vec3<T>(abcd); }
     T offset() const { return abcd.w; }
 
@@ -46,6 +58,9 @@ struct Plane {
     }
     // The same plane, other side positive.
     Plane flipped() const { return Plane(-abcd); }
+    // The same plane oriented so that `inside` is on its non-negative side:
+    // this plane when distance(inside) >= 0, else flipped().
+    Plane facing(const Vec3<T>& inside) const { return distance(inside) >= T(0) ? *this : flipped(); }
 
     // True when the normal is (relatively) zero: no plane, e.g. the far
     // plane of an infinite frustum (docs/errata.md erratum 9).

@@ -35,6 +35,13 @@ Result<MatrixPair<T>> off_axis(T left, T right, T bottom, T top, T near_m, std::
 // Orthographic box [left, right] x [bottom, top] x [-far_m, -near_m] in eye
 // space; near_m may be negative or zero, far_m must exceed it. The eye (and
 // so vanishing point O) is a point at infinity.
+//
+//   | 2/(r-l)    0       0   -(r+l)/(r-l) |     A = -(z_f - z_n)/(f - n)
+//   |    0    2/(t-b)    0   -(t+b)/(t-b) |     B = z_n + A n
+//   |    0       0       A         B      |
+//   |    0       0       0         1      |
+//
+// Both constructors write their matrices with from_rows() (matrix_rows.hpp).
 template <class T>
 Result<MatrixPair<T>> orthographic(T left, T right, T bottom, T top, T near_m, T far_m, DepthRange depth);
 

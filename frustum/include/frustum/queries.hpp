@@ -10,6 +10,7 @@
 
 #include "frustum/matrix_pair.hpp"
 #include "frustum/plane.hpp"
+#include "frustum/result.hpp"
 
 #include <array>
 #include <optional>
@@ -74,5 +75,34 @@ template <class T>
 constexpr T infinity_tolerance() {
     return sizeof(T) == sizeof(float) ? T(1e-6) : T(1e-12);
 }
+
+// The eye O as a Euclidean point: key_points(pair).eye in canonical form
+// (to_point with infinity_tolerance<T>()). Empty for an orthographic pair,
+// whose eye is at infinity.
+template <class T>
+std::optional<Vec3<T>> eye_point(const MatrixPair<T>& pair);
+
+// Distance (metres, >= 0) from the eye to the near / far plane, measured
+// along the plane's normal with the normalized planes(). Errors: no finite
+// eye (orthographic); for far_distance also an infinite far plane.
+template <class T>
+Result<T> near_distance(const MatrixPair<T>& pair);
+template <class T>
+Result<T> far_distance(const MatrixPair<T>& pair);
+
+// The near-plane frame of a perspective camera: centre, unit axes and half
+// sizes (metres), from its near corners C1..C4 (§3.2). x_axis points from
+// C2 to C1 (towards the right edge), y_axis from C4 to C1 (towards the top).
+template <class T>
+struct NearPlaneFrame {
+    Vec3<T> center, x_axis, y_axis, eye;
+    T half_width_m, half_height_m;
+    Vec3<T> point(const Vec2<T>& plane_m) const { return center + plane_m.x * x_axis + plane_m.y * y_axis; }
+    // Unit viewing direction, away from the eye for a right-handed frame.
+    Vec3<T> forward() const { return glm::normalize(glm::cross(y_axis, x_axis)); }
+};
+// Errors: no finite eye, or a near corner at infinity.
+template <class T>
+Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera);
 
 } // namespace frustum

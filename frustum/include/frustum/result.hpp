@@ -1,9 +1,24 @@
 // Result<T>: a value or an Error. No exceptions cross the library boundary
 // and nothing asserts on user data; callers decide what to print.
+//
+// Reading the value of a failed result (value(), *, ->) or the error of a
+// successful one (take_error()) is a programming error in the caller, not bad
+// user data: it prints one line to stderr and aborts, with or without
+// exceptions (FRUSTUM_NO_EXCEPTIONS), in every build type. Test ok() first,
+// or use value_or().
+//
+//   auto pair = frustum::perspective<float>(fovy, aspect, near_m, far_m, depth);
+//   if (!pair) {
+//       return pair.take_error_in("render::main_camera()"); // "render::main_camera(): frustum::perspective(): ..."
+//   }
+//   use(*pair);
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -15,6 +30,26 @@ namespace frustum {
 struct Error {
     std::string message;
 };
+
+namespace detail {
+
+// The one place a misused Result stops the program: `what` names the misuse,
+// `message` is the error the result held (empty when it held a value).
+[[noreturn]] inline void result_misuse(const char* what, const std::string& message) {
+    std::fprintf(stderr, "frustum::Result: %s%s%s\n", what, message.empty() ? "" : ": ", message.c_str());
+    std::fflush(stderr);
+    std::abort();
+}
+
+// "caller: message" (the caller's name first, as in the project's format).
+inline Error prefixed(std::string_view caller, std::string message) {
+    std::string text(caller);
+    text += ": ";
+    text += message;
+    return Error{std::move(text)};
+}
+
+} // namespace detail
 
 template <class T>
 class [[nodiscard]] Result {
@@ -28,15 +63,25 @@ public:
     bool ok() const { return state_.index() == 0; }
     explicit operator bool() const { return ok(); }
 
-    // Precondition: ok(). Reading the value of a failed result is a
-    // programming error in the caller, not bad user data.
-    const T& value() const& { return *std::get_if<0>(&state_); }
-    T& value() & { return *std::get_if<0>(&state_); }
-    T&& value() && { return std::move(*std::get_if<0>(&state_)); }
+    // Precondition: ok(); aborts with the held error otherwise.
+    const T& value() const& { return *checked(); }
+    T& value() & { return *checked(); }
+    T&& value() && { return std::move(*checked()); }
     const T& operator*() const& { return value(); }
     T& operator*() & { return value(); }
-    const T* operator->() const { return std::get_if<0>(&state_); }
-    T* operator->() { return std::get_if<0>(&state_); }
+    T&& operator*() && { return std::move(*checked()); }
+    const T* operator->() const { return checked(); }
+    T* operator->() { return checked(); }
+
+    // The value, or `fallback` when failed (never aborts).
+    template <class U>
+    T value_or(U&& fallback) const& {
+        return ok() ? *std::get_if<0>(&state_) : static_cast<T>(std::forward<U>(fallback));
+    }
+    template <class U>
+    T value_or(U&& fallback) && {
+        return ok() ? std::move(*std::get_if<0>(&state_)) : static_cast<T>(std::forward<U>(fallback));
+    }
 
     // Empty when ok().
     const std::string& error() const {
@@ -45,7 +90,33 @@ public:
         return e ? e->message : none;
     }
 
+    // Precondition: !ok(). The error, to return as is from a function of
+    // another Result type: `if (!x) return x.take_error();`. Moved out of a
+    // non-const result (whose error() is then empty), copied from a const one.
+    Error take_error() { return Error{std::move(failed()->message)}; }
+    Error take_error() const { return Error{failed()->message}; }
+    // The same with the caller's name in front: "caller: <error>".
+    Error take_error_in(std::string_view caller) { return detail::prefixed(caller, std::move(failed()->message)); }
+    Error take_error_in(std::string_view caller) const { return detail::prefixed(caller, failed()->message); }
+
 private:
+    const T* checked() const {
+        const T* v = std::get_if<0>(&state_);
+        if (v == nullptr) {
+            detail::result_misuse("value() of a failed result", error());
+        }
+        return v;
+    }
+    T* checked() { return const_cast<T*>(static_cast<const Result&>(*this).checked()); }
+    const Error* failed() const {
+        const Error* e = std::get_if<1>(&state_);
+        if (e == nullptr) {
+            detail::result_misuse("take_error() of a successful result", std::string());
+        }
+        return e;
+    }
+    Error* failed() { return const_cast<Error*>(static_cast<const Result&>(*this).failed()); }
+
     // A variant, not optional + string: a successful result carries no
     // string at all, which keeps the hot paths (crop, clip) lean.
     std::variant<T, Error> state_;
@@ -63,8 +134,20 @@ public:
         static const std::string none;
         return error_ ? error_->message : none;
     }
+    // Precondition: !ok(), as Result::take_error() / take_error_in().
+    Error take_error() { return Error{std::move(failed().message)}; }
+    Error take_error() const { return Error{failed().message}; }
+    Error take_error_in(std::string_view caller) { return detail::prefixed(caller, std::move(failed().message)); }
+    Error take_error_in(std::string_view caller) const { return detail::prefixed(caller, failed().message); }
 
 private:
+    const Error& failed() const {
+        if (!error_) {
+            detail::result_misuse("take_error() of a successful status", std::string());
+        }
+        return *error_;
+    }
+    Error& failed() { return const_cast<Error&>(static_cast<const Status&>(*this).failed()); }
     std::optional<Error> error_; // no string at all on success
 };
 

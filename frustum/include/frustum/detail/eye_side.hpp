@@ -5,6 +5,7 @@
 #pragma once
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/matrix_pair.hpp"
 #include "frustum/plane.hpp"
 #include "frustum/queries.hpp"
@@ -22,7 +23,7 @@ template <class T>
 std::optional<Error> eye_in_front(const MatrixPair<T>& pair, const Plane<T>& unit_plane, const char* function,
                                   const char* plane_name, const char* in_plane, const char* behind) {
     const T eye_side = -clip_z_span<T>(pair.depth()) * glm::dot(unit_plane.abcd, pair.inverse()[2]);
-    const T floor = T(64) * std::numeric_limits<T>::epsilon() * glm::length(pair.inverse()[2]);
+    const T floor = rounding_floor<T>() * glm::length(pair.inverse()[2]);
     if (eye_side > floor) {
         return std::nullopt;
     }

@@ -8,9 +8,20 @@
 
 namespace frustum::detail {
 
+// A scalar: neither NaN nor infinite.
+template <class T>
+bool finite(T v) {
+    return std::isfinite(v);
+}
+
 template <class T>
 bool finite3(const Vec3<T>& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+template <class T>
+bool finite4(const Vec4<T>& v) {
+    return finite3(Vec3<T>(v)) && std::isfinite(v.w);
 }
 
 } // namespace frustum::detail

@@ -6,6 +6,7 @@
 // backwards).
 #pragma once
 
+#include "frustum/detail/tolerances.hpp"
 #include "frustum/types.hpp"
 
 namespace frustum::detail {
@@ -48,7 +49,7 @@ std::optional<Mat4<T>> inverse_from_rows(const Mat4<T>& m) {
         const Vec4<T> point = cross4(a, b, c);
         const T scale = glm::dot(rows[j], point);
         const T reference = glm::length(rows[j]) * glm::length(point);
-        if (!(std::abs(scale) > T(16) * std::numeric_limits<T>::epsilon() * reference)) {
+        if (!(std::abs(scale) > dependent_rows_floor<T>() * reference)) {
             return std::nullopt;
         }
         inv[j] = point / scale;

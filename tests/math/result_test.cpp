@@ -1,0 +1,148 @@
+// Result<T> and Status: the accessors that keep a failed result from being
+// read as a value. A misuse aborts with one line on stderr (checked in a
+// child process where fork() exists), the rest are plain value checks.
+#include "support.hpp"
+
+#if defined(__unix__) && !defined(__EMSCRIPTEN__)
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
+#define MTEST_HAS_FORK 1
+#else
+#define MTEST_HAS_FORK 0
+#endif
+
+#include <functional>
+#include <string>
+
+using frustum::Error;
+using frustum::Result;
+using frustum::Status;
+
+namespace {
+
+Result<int> parsed(bool ok) {
+    if (ok) {
+        return 7;
+    }
+    return Error{"frustum::parse(): needs a digit, got x"};
+}
+
+// A caller of another Result type, written the way the library writes them.
+Result<std::string> caller(bool ok) {
+    auto v = parsed(ok);
+    if (!v) {
+        return v.take_error_in("app::caller()");
+    }
+    return std::to_string(*v);
+}
+
+#if MTEST_HAS_FORK
+struct Death {
+    bool aborted = false;
+    std::string stderr_text;
+};
+
+// Runs `body` in a child; reports whether it died of SIGABRT and what it wrote to stderr.
+Death run_in_child(const std::function<void()>& body) {
+    int fds[2];
+    REQUIRE(pipe(fds) == 0);
+    const pid_t pid = fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        close(fds[0]);
+        dup2(fds[1], 2);
+        body();
+        _exit(0); // the misuse did not stop the program: the parent sees exit 0
+    }
+    close(fds[1]);
+    Death death;
+    char buffer[512];
+    for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) > 0;) {
+        death.stderr_text.append(buffer, static_cast<std::size_t>(n));
+    }
+    close(fds[0]);
+    int status = 0;
+    REQUIRE(waitpid(pid, &status, 0) == pid);
+    death.aborted = WIFSIGNALED(status) && WTERMSIG(status) == SIGABRT;
+    return death;
+}
+#endif
+
+} // namespace
+
+TEST_CASE("Result: value, value_or and the error of a success and a failure") {
+    const auto good = parsed(true);
+    const auto bad = parsed(false);
+    CHECK(good.ok());
+    CHECK(*good == 7);
+    CHECK(good.value() == 7);
+    CHECK(good.value_or(-1) == 7);
+    CHECK(good.error().empty());
+    CHECK_FALSE(bad.ok());
+    CHECK(bad.value_or(-1) == -1);
+    CHECK(bad.error() == "frustum::parse(): needs a digit, got x");
+    CHECK(parsed(false).value_or(3) == 3); // the rvalue overload
+}
+
+TEST_CASE("Result: take_error moves the error out, take_error_in prefixes the caller") {
+    auto bad = parsed(false);
+    const Error taken = bad.take_error();
+    CHECK(taken.message == "frustum::parse(): needs a digit, got x");
+    CHECK(bad.error().empty());
+    CHECK_FALSE(bad.ok()); // still a failure, only its text was moved
+    const auto relayed = caller(false);
+    REQUIRE_FALSE(relayed.ok());
+    CHECK(relayed.error() == "app::caller(): frustum::parse(): needs a digit, got x");
+    CHECK(*caller(true) == "7");
+}
+
+TEST_CASE("Status: take_error and take_error_in like Result") {
+    Status failed = Error{"frustum::check(): bad"};
+    Status copy = failed;
+    CHECK(failed.take_error_in("x()").message == "x(): frustum::check(): bad");
+    CHECK(copy.take_error().message == "frustum::check(): bad");
+    CHECK(Status().ok());
+}
+
+TEST_CASE("Result: -> reads a member of the value") {
+    const Result<std::string> text = std::string("abc");
+    CHECK(text->size() == 3);
+}
+
+#if MTEST_HAS_FORK
+TEST_CASE("Result: reading a failed result aborts with its error on stderr") {
+    const auto value = run_in_child([] {
+        const auto bad = parsed(false);
+        std::printf("%d", bad.value());
+    });
+    CHECK(value.aborted);
+    CHECK(value.stderr_text ==
+          "frustum::Result: value() of a failed result: frustum::parse(): needs a digit, got x\n");
+
+    const auto star = run_in_child([] {
+        auto bad = parsed(false);
+        std::printf("%d", *bad);
+    });
+    CHECK(star.aborted);
+    const auto arrow = run_in_child([] {
+        const Result<std::string> bad = Error{"frustum::f(): no"};
+        std::printf("%zu", bad->size());
+    });
+    CHECK(arrow.aborted);
+    CHECK(arrow.stderr_text == "frustum::Result: value() of a failed result: frustum::f(): no\n");
+
+    const auto taken = run_in_child([] {
+        auto good = parsed(true);
+        std::printf("%s", good.take_error().message.c_str());
+    });
+    CHECK(taken.aborted);
+    CHECK(taken.stderr_text == "frustum::Result: take_error() of a successful result\n");
+    const auto status = run_in_child([] {
+        Status fine;
+        std::printf("%s", fine.take_error().message.c_str());
+    });
+    CHECK(status.aborted);
+    CHECK(status.stderr_text == "frustum::Result: take_error() of a successful status\n");
+}
+#endif
