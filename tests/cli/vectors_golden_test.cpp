@@ -91,7 +91,7 @@ void check_golden(const char* request, const char* response) {
         const json& e = expected["cases"][i];
         compare(e, actual["cases"][i], "cases[" + std::to_string(i) + "] (" + e["id"].get<std::string>() + ")", drift);
     }
-    MESSAGE("golden drift " << response << ": " << drift.different << " of " << drift.numbers
+    MESSAGE("golden drift " << std::string(response) << ": " << drift.different << " of " << drift.numbers
                             << " numbers differ, worst relative difference " << drift.worst);
 }
 
