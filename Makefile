@@ -48,7 +48,7 @@ test-clang:
 
 # The library, the math suite and frustum-vectors with the golden vectors,
 # cross-built for ARM and run under qemu: aarch64 with and without FMA
-# contraction, armhf baseline (scripts/test-arm.sh, docs/porting.md).
+# contraction, armhf baseline (scripts/test-arm.sh).
 # test-aarch64 is the first variant alone. Not in CI yet: on main the
 # portal residual bound (all ARM variants) and exact error texts (FMA) fail.
 test-arm test-aarch64:
