@@ -20,6 +20,8 @@ for flag in "$@"; do
     --window) packages+=(xvfb x11-apps imagemagick) ;;
     --bench) packages+=(gnuplot-nox libeigen3-dev) ;; # scripts/plot-bench.sh; Eigen: a baseline in bench_ops
     --web) packages+=(emscripten chromium) ;; # make web: the WebGL 2 page and its headless-browser test
+    --arm) packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user) ;; # make test-arm, test-aarch64
+    --clang) packages+=(clang) ;; # make test-clang
   esac
 done
 

@@ -7,6 +7,12 @@ foreach(lib frustum_reference frustum_render frustum_scene frustum_gl frustum_im
 endforeach()
 frustum_test_suite(scene frustum::frustum ${_app_libs})
 frustum_test_suite(gl frustum::frustum ${_app_libs})
+# The OpenGL ES 3.0 header: the entry-point table is checked against it.
+find_file(FRUSTUM_GLES3_HEADER GLES3/gl3.h)
+if(NOT FRUSTUM_GLES3_HEADER)
+  message(FATAL_ERROR "GLES3/gl3.h not found (libgles-dev, scripts/install-deps.sh)")
+endif()
+target_compile_definitions(test_gl PRIVATE FRUSTUM_GLES3_HEADER="${FRUSTUM_GLES3_HEADER}")
 frustum_test_suite(cli frustum::frustum ${_app_libs})
 include(${CMAKE_CURRENT_SOURCE_DIR}/robustness/suite.cmake OPTIONAL) # frustum_test_suite(robustness ...) + tool paths
 include(${CMAKE_CURRENT_SOURCE_DIR}/window/suite.cmake OPTIONAL) # frustum_test_suite(window ...) + frustum-demo's path
