@@ -14,6 +14,7 @@ packages=(
   libosmesa6-dev        # OSMesa offscreen fallback
   libglfw3-dev          # desktop window
   libbenchmark-dev      # Google Benchmark (bench targets)
+  glslang-tools         # glslangValidator: the GLES 3.0 strictness test (tests/gl/glsl_strict_test.cpp)
 )
 for flag in "$@"; do
   case "$flag" in

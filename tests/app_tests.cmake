@@ -7,6 +7,15 @@ foreach(lib frustum_reference frustum_render frustum_scene frustum_gl frustum_im
 endforeach()
 frustum_test_suite(scene frustum::frustum ${_app_libs})
 frustum_test_suite(gl frustum::frustum ${_app_libs})
+# The gl suite again on an OpenGL ES 3.0 context (what WebGL 2 and older
+# phones give), then also without GL_EXT_clip_control (the [-1, 1] path):
+# Mesa's overrides; gles30_context_test.cpp checks they took effect.
+add_test(NAME gl-es30 COMMAND test_gl)
+set_tests_properties(gl-es30 PROPERTIES LABELS gl
+                     ENVIRONMENT "MESA_GLES_VERSION_OVERRIDE=3.0;FRUSTUM_EXPECT_GLES=3.0")
+add_test(NAME gl-es30-no-clip-control COMMAND test_gl)
+set_tests_properties(gl-es30-no-clip-control PROPERTIES LABELS gl
+                     ENVIRONMENT "MESA_GLES_VERSION_OVERRIDE=3.0;MESA_EXTENSION_OVERRIDE=-GL_EXT_clip_control;FRUSTUM_EXPECT_GLES=3.0-no-clip-control")
 # The OpenGL ES 3.0 header: the entry-point table is checked against it.
 find_file(FRUSTUM_GLES3_HEADER GLES3/gl3.h)
 if(NOT FRUSTUM_GLES3_HEADER)

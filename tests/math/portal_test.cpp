@@ -101,8 +101,11 @@ TEST_CASE_TEMPLATE("portal: x, y, w of M' p equal those of M (T p); the inverse 
             CHECK(std::abs(double(ported.y - direct.y)) <= loose<T>() * 10 * scale);
             CHECK(std::abs(double(ported.w - direct.w)) <= loose<T>() * 10 * scale);
         }
-        // Same bound as clip_oblique's own test (mirror_test, oblique_clip_test).
-        CHECK(inverse_residual(*through) <= (sizeof(T) == 4 ? 1024 : 64) * eps<T>());
+        // clip_oblique's own bound (mirror_test, oblique_clip_test), 4x in
+        // double for the rigid carry before the clip: the worst of these 300
+        // cases is 150 eps on aarch64 and armhf, whose libm draws other last
+        // bits of the random cameras than x86-64's (make test-arm).
+        CHECK(inverse_residual(*through) <= (sizeof(T) == 4 ? 1024 : 256) * eps<T>());
         ++checked;
     }
     CHECK(checked == 300);
