@@ -1,11 +1,15 @@
 # Suites that need the app layers. Each links whatever app libraries exist.
 set(_app_libs)
-foreach(lib frustum_reference frustum_render frustum_scene frustum_gl frustum_image frustum_vectors_lib frustum_window frustum_precision)
+foreach(lib frustum_reference frustum_render frustum_plan frustum_scene frustum_gl frustum_image frustum_vectors_lib frustum_window frustum_precision)
   if(TARGET ${lib})
     list(APPEND _app_libs ${lib})
   endif()
 endforeach()
 frustum_test_suite(scene frustum::frustum ${_app_libs})
+# The GL-free planning code alone: links no GL library, needs no context.
+if(TARGET frustum_plan)
+  frustum_test_suite(plan frustum_plan)
+endif()
 frustum_test_suite(gl frustum::frustum ${_app_libs})
 # The gl suite again on an OpenGL ES 3.0 context (what WebGL 2 and older
 # phones give), then also without GL_EXT_clip_control (the [-1, 1] path):

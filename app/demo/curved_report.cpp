@@ -8,8 +8,8 @@
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
 #include <image/png.hpp>
-#include <render/camera.hpp>
-#include <render/curved_mirror.hpp>
+#include <plan/camera.hpp>
+#include <plan/curved_mirror.hpp>
 #include <render/curved_pass.hpp>
 #include <reference/curved_reference.hpp>
 #include <render/renderer.hpp>

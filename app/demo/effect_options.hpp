@@ -9,14 +9,14 @@
 #include "demo/command.hpp"
 #include "demo/failure.hpp"
 
-#include <render/curved_mirror.hpp>
-#include <render/effect.hpp>
+#include <plan/curved_mirror.hpp>
+#include <plan/effect.hpp>
 #include <render/fog_pass.hpp>
-#include <render/mirror_placement.hpp>
-#include <render/scene_fit.hpp>
-#include <render/stereo.hpp>
-#include <render/view_links.hpp>
-#include <render/view_tree.hpp>
+#include <plan/mirror_placement.hpp>
+#include <plan/scene_fit.hpp>
+#include <plan/stereo.hpp>
+#include <plan/view_links.hpp>
+#include <plan/view_tree.hpp>
 
 #include <optional>
 #include <string>
@@ -39,7 +39,7 @@ inline constexpr long long kMaxTiles = 16384;
 
 // What the effect options set (demo::Settings, what every command's
 // options set, is these plus the others). Unset parameters are derived from the scene
-// (render/scene_fit.hpp, render/mirror_placement.hpp, docs/any-scene.md).
+// (plan/scene_fit.hpp, plan/mirror_placement.hpp, docs/any-scene.md).
 struct EffectSettings {
     int tile_columns = 3, tile_rows = 2; // --tiles
     bool tile_borders = false;           // --tile-borders
@@ -52,7 +52,7 @@ struct EffectSettings {
     render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
     // Fog (fog rows of effect_options.cpp): --fog, --fog-density, --fog-color.
     std::optional<render::FogOptions> fog;
-    // Stereo (render/stereo.hpp): side-by-side eyes, each its own pair.
+    // Stereo (plan/stereo.hpp): side-by-side eyes, each its own pair.
     bool stereo = false;                       // --stereo
     float ipd_m = render::kDefaultIpdM;        // --ipd-m
     std::optional<float> convergence_m;        // --convergence-m; unset: render::default_convergence_m()

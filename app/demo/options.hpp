@@ -16,7 +16,7 @@
 #include <gl/offscreen_target.hpp>
 #include <gl/window_input.hpp>
 #include <render/depth_policy.hpp>
-#include <render/effect.hpp>
+#include <plan/effect.hpp>
 #include <scene/load_gltf.hpp>
 
 #include <functional>

@@ -7,12 +7,12 @@
 #include <gl/functions.hpp>
 #include <image/contact_sheet.hpp>
 #include <image/png.hpp>
-#include <render/camera.hpp>
-#include <render/curved_mirror.hpp>
-#include <render/mirror_placement.hpp>
-#include <render/number_text.hpp>
+#include <plan/camera.hpp>
+#include <plan/curved_mirror.hpp>
+#include <plan/mirror_placement.hpp>
+#include <plan/number_text.hpp>
 #include <render/renderer.hpp>
-#include <render/scene_fit.hpp>
+#include <plan/scene_fit.hpp>
 #include <render/stereo_render.hpp>
 #include <scene/load_gltf.hpp>
 

@@ -9,7 +9,7 @@
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
 #include <render/renderer.hpp>
-#include <render/stereo.hpp>
+#include <plan/stereo.hpp>
 #include <scene/scene.hpp>
 
 #include <functional>

@@ -11,7 +11,7 @@
 #include <frustum/result.hpp>
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <render/renderer.hpp>
 #include <scene/scene.hpp>
 

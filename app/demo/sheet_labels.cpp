@@ -1,7 +1,7 @@
 #include "demo/sheet_labels.hpp"
 
-#include <render/number_text.hpp>
-#include <render/scene_fit.hpp>
+#include <plan/number_text.hpp>
+#include <plan/scene_fit.hpp>
 #include <window/text_layout.hpp>
 
 #include <algorithm>
@@ -92,6 +92,11 @@ std::vector<CaptionLine> effect_caption(render::Effect effect, const render::Ren
         }
         return lines;
     }
+    case render::Effect::Portal:
+        return {{name + ": the scene from the exit, through the entry"}};
+    case render::Effect::Recursion:
+        return {{name + " " + std::string(render::to_string(o.recursion_links)) + ", depth " +
+                 std::to_string(o.recursion_depth)}};
     }
     return {{name}};
 }

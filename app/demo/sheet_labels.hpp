@@ -5,7 +5,7 @@
 #pragma once
 
 #include <image/image.hpp>
-#include <render/effect.hpp>
+#include <plan/effect.hpp>
 #include <render/renderer.hpp>
 
 #include <frustum/matrix_pair.hpp>

@@ -7,7 +7,7 @@
 #include <gl/window_framebuffer.hpp>
 #include <image/png.hpp>
 #include <gl/offscreen_target.hpp>
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <render/renderer.hpp>
 #include <window/controls.hpp>
 #include <window/frame.hpp>

@@ -1,7 +1,7 @@
 #include "precision/depth_precision.hpp"
 
-#include <render/camera.hpp>
-#include <render/mirror_geometry.hpp>
+#include <plan/camera.hpp>
+#include <plan/mirror_geometry.hpp>
 
 #include <frustum/oblique_clip.hpp>
 #include <frustum/projection.hpp>

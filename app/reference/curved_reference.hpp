@@ -7,7 +7,7 @@
 // instance, then every triangle.
 #pragma once
 
-#include "render/curved_mirror.hpp"
+#include "plan/curved_mirror.hpp"
 #include "render/pass_context.hpp"
 
 #include <frustum/matrix_pair.hpp>

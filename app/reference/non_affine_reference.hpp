@@ -16,7 +16,7 @@
 #pragma once
 
 #include "render/pass_context.hpp"
-#include "render/world_geometry.hpp"
+#include "plan/world_geometry.hpp"
 
 #include <frustum/non_affine.hpp>
 #include <image/image.hpp>

@@ -13,7 +13,7 @@
 // frustum makes, not the fragment's exactly reflected ray.
 #pragma once
 
-#include "render/curved_mirror.hpp"
+#include "plan/curved_mirror.hpp"
 #include "render/pass_context.hpp"
 
 #include <frustum/matrix_pair.hpp>

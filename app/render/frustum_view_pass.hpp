@@ -3,7 +3,7 @@
 // depth test so they stay visible behind objects.
 #pragma once
 
-#include "render/frustum_lines.hpp"
+#include "plan/frustum_lines.hpp"
 #include "render/pass_context.hpp"
 
 #include <frustum/matrix_pair.hpp>

@@ -3,9 +3,9 @@
 // looking its colour up in that texture (mirror_composite shaders).
 #pragma once
 
-#include "render/effect.hpp"
+#include "plan/effect.hpp"
 #include "render/fog_pass.hpp"
-#include "render/mirror_geometry.hpp"
+#include "plan/mirror_geometry.hpp"
 #include "render/pass_context.hpp"
 
 #include <frustum/matrix_pair.hpp>

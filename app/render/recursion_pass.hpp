@@ -8,8 +8,8 @@
 
 #include "render/pass_context.hpp"
 #include "render/scene_pass.hpp"
-#include "render/view_links.hpp"
-#include "render/view_tree.hpp"
+#include "plan/view_links.hpp"
+#include "plan/view_tree.hpp"
 
 #include <frustum/result.hpp>
 #include <gl/offscreen_target.hpp>

@@ -3,7 +3,7 @@
 #include "render/curved_pass.hpp"
 #include "render/frustum_view_pass.hpp"
 #include "render/lens_pass.hpp"
-#include "render/mirror_motion.hpp"
+#include "plan/mirror_motion.hpp"
 #include "render/mirror_pass.hpp"
 #include "render/recursion_pass.hpp"
 #include "render/scene_pass.hpp"

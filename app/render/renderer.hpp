@@ -4,18 +4,18 @@
 // current while it is used or destroyed.
 #pragma once
 
-#include "render/camera.hpp"
-#include "render/curved_mirror.hpp"
+#include "plan/camera.hpp"
+#include "plan/curved_mirror.hpp"
 #include "render/depth_policy.hpp"
-#include "render/effect.hpp"
+#include "plan/effect.hpp"
 #include "render/fog_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
-#include "render/scene_fit.hpp"
-#include "render/view_links.hpp"
-#include "render/world_geometry.hpp"
+#include "plan/scene_fit.hpp"
+#include "plan/view_links.hpp"
+#include "plan/world_geometry.hpp"
 
 #include <frustum/result.hpp>
 #include <gl/context.hpp>

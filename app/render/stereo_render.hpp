@@ -1,11 +1,11 @@
 // Side-by-side stereo images with the Renderer: each eye's cameras
-// (render/stereo.hpp) rendered as their own frame, so the mirror, lens and
+// (plan/stereo.hpp) rendered as their own frame, so the mirror, lens and
 // tile effects run per eye, then the left eye's image and the right eye's
 // placed side by side.
 #pragma once
 
 #include "render/renderer.hpp"
-#include "render/stereo.hpp"
+#include "plan/stereo.hpp"
 
 #include <frustum/result.hpp>
 #include <image/image.hpp>

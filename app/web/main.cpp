@@ -5,7 +5,7 @@
 #include "web/browser_input.hpp"
 #include "web/viewer.hpp"
 
-#include <render/effect.hpp>
+#include <plan/effect.hpp>
 
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>

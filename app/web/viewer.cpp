@@ -1,6 +1,6 @@
 #include "web/viewer.hpp"
 
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <scene/load_gltf.hpp>
 #include <window/frame.hpp>
 #include <window/window_cameras.hpp>

@@ -11,8 +11,8 @@
 #include <gl/functions.hpp>
 #include <gl/web_context.hpp>
 #include <gl/window_input.hpp>
-#include <render/camera.hpp>
-#include <render/effect.hpp>
+#include <plan/camera.hpp>
+#include <plan/effect.hpp>
 #include <render/renderer.hpp>
 #include <scene/scene.hpp>
 #include <window/controls.hpp>

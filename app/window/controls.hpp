@@ -7,8 +7,8 @@
 
 #include <frustum/matrix_pair.hpp>
 #include <gl/window_input.hpp>
-#include <render/effect.hpp>
-#include <render/view_tree.hpp>
+#include <plan/effect.hpp>
+#include <plan/view_tree.hpp>
 #include <scene/scene.hpp>
 
 #include <glm/glm.hpp>

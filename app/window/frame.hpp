@@ -7,10 +7,10 @@
 
 #include <frustum/result.hpp>
 #include <gl/window_framebuffer.hpp>
-#include <render/camera.hpp>
-#include <render/effect.hpp>
+#include <plan/camera.hpp>
+#include <plan/effect.hpp>
 #include <render/renderer.hpp>
-#include <render/stereo.hpp>
+#include <plan/stereo.hpp>
 
 #include <optional>
 #include <string>
@@ -29,7 +29,7 @@ struct Frame {
     bool inset = false;
     std::vector<std::string> text; // help panel lines; empty: none
     // Set: cameras and options are one eye's (half the framebuffer's
-    // width); the painter draws each eye's pair (render/stereo.hpp) into
+    // width); the painter draws each eye's pair (plan/stereo.hpp) into
     // its half, and no inset.
     std::optional<render::StereoRig> stereo;
 };

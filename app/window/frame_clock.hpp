@@ -2,7 +2,7 @@
 // the number is readable while it changes.
 #pragma once
 
-#include <render/effect.hpp>
+#include <plan/effect.hpp>
 
 #include <chrono>
 #include <optional>

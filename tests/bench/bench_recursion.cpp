@@ -13,8 +13,8 @@
 #include "bench_render_setup.hpp"
 
 #include <render/recursion_pass.hpp>
-#include <render/view_links.hpp>
-#include <render/view_tree.hpp>
+#include <plan/view_links.hpp>
+#include <plan/view_tree.hpp>
 
 #include <benchmark/benchmark.h>
 #include <gl/offscreen_target.hpp>

@@ -9,10 +9,10 @@
 #include <frustum/plane.hpp>
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <render/depth_policy.hpp>
 #include <render/lens_pass.hpp>
-#include <render/mirror_geometry.hpp>
+#include <plan/mirror_geometry.hpp>
 #include <render/pass_context.hpp>
 #include <render/renderer.hpp>
 #include <scene/scene.hpp>

@@ -6,9 +6,9 @@
 #include "../sample_files.hpp"
 #include "render_test_support.hpp"
 
-#include <render/mirror_geometry.hpp>
-#include <render/mirror_placement.hpp>
-#include <render/scene_fit.hpp>
+#include <plan/mirror_geometry.hpp>
+#include <plan/mirror_placement.hpp>
+#include <plan/scene_fit.hpp>
 
 #include <cstdlib>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The curved mirror's geometry (render/curved_mirror.hpp, paper §4.3),
+// The curved mirror's geometry (plan/curved_mirror.hpp, paper §4.3),
 // without GL: the cap, its ray intersection, the patch targets and the
 // frustums fit_volume() finds for them on the showcase.
 #include "render_test_support.hpp"
@@ -6,7 +6,7 @@
 #include <frustum/queries.hpp>
 #include <frustum/validate.hpp>
 #include <frustum/volume_approximation.hpp>
-#include <render/curved_mirror.hpp>
+#include <plan/curved_mirror.hpp>
 #include <reference/curved_reference.hpp>
 
 #include <cmath>

@@ -3,7 +3,7 @@
 // (reference/curved_reference.hpp) for a curved one.
 #include "render_test_support.hpp"
 
-#include <render/curved_mirror.hpp>
+#include <plan/curved_mirror.hpp>
 #include <reference/curved_reference.hpp>
 
 namespace {

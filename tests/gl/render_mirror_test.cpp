@@ -3,7 +3,7 @@
 
 #include <frustum/reflect.hpp>
 #include <gl/offscreen_target.hpp>
-#include <render/mirror_geometry.hpp>
+#include <plan/mirror_geometry.hpp>
 #include <render/scene_pass.hpp>
 
 TEST_SUITE("gl") {

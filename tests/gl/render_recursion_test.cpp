@@ -11,8 +11,8 @@
 #include <gl/offscreen_target.hpp>
 #include <render/recursion_pass.hpp>
 #include <render/scene_pass.hpp>
-#include <render/view_links.hpp>
-#include <render/view_tree.hpp>
+#include <plan/view_links.hpp>
+#include <plan/view_tree.hpp>
 
 namespace {
 

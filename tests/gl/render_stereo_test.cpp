@@ -1,4 +1,4 @@
-// Stereo (render/stereo.hpp): each eye is its own pair through a shared
+// Stereo (plan/stereo.hpp): each eye is its own pair through a shared
 // screen at the convergence depth, and the mirror is built per eye, so a
 // point on the mirror has zero disparity and a reflection has the
 // disparity of its reflected (virtual) depth, behind the mirror. A
@@ -9,8 +9,8 @@
 
 #include <frustum/mirror.hpp>
 #include <frustum/reflect.hpp>
-#include <render/mirror_geometry.hpp>
-#include <render/stereo.hpp>
+#include <plan/mirror_geometry.hpp>
+#include <plan/stereo.hpp>
 #include <render/stereo_render.hpp>
 
 #include <algorithm>

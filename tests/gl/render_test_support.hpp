@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl_test_support.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
@@ -12,9 +13,9 @@
 #include <frustum/reflect.hpp>
 #include <gl/offscreen_target.hpp>
 #include <image/png.hpp>
-#include <render/mirror_geometry.hpp>
+#include <plan/mirror_geometry.hpp>
 #include <render/scene_pass.hpp>
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <render/renderer.hpp>
 #include <scene/load_gltf.hpp>
 
@@ -29,27 +30,6 @@
 #include <vector>
 
 namespace render_test {
-
-// The showcase's main camera is 16:9; keep test images small.
-inline constexpr int kWidthPx = 256;
-inline constexpr int kHeightPx = 144;
-
-inline const scene::Scene& showcase() {
-    static const scene::Scene loaded = [] {
-        auto result = scene::load_gltf(std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf");
-        REQUIRE_MESSAGE(result.ok(), result.error());
-        return std::move(*result);
-    }();
-    return loaded;
-}
-
-inline render::Cameras showcase_cameras(int width_px = kWidthPx, int height_px = kHeightPx) {
-    const auto index = render::find_camera(showcase(), std::nullopt);
-    REQUIRE_MESSAGE(index.ok(), index.error());
-    auto cameras = render::make_cameras(showcase(), *index, width_px, height_px);
-    REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-    return std::move(*cameras);
-}
 
 inline render::RenderOptions options(int width_px = kWidthPx, int height_px = kHeightPx) {
     render::RenderOptions o;

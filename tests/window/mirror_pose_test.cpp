@@ -3,7 +3,7 @@
 
 #include <doctest/doctest.h>
 
-#include <render/mirror_motion.hpp>
+#include <plan/mirror_motion.hpp>
 #include <window/mirror_pose.hpp>
 
 namespace {

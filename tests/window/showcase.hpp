@@ -3,7 +3,7 @@
 
 #include <doctest/doctest.h>
 
-#include <render/camera.hpp>
+#include <plan/camera.hpp>
 #include <scene/load_gltf.hpp>
 
 #include <string>

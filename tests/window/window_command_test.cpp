@@ -15,7 +15,7 @@
 #include <image/compare.hpp>
 #include <image/image.hpp>
 #include <image/png.hpp>
-#include <render/effect.hpp>
+#include <plan/effect.hpp>
 
 #include <filesystem>
 #include <string>

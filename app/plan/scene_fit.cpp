@@ -1,6 +1,6 @@
-#include "render/scene_fit.hpp"
+#include "plan/scene_fit.hpp"
 
-#include "render/number_text.hpp"
+#include "plan/number_text.hpp"
 
 #include <frustum/queries.hpp>
 

@@ -1,6 +1,6 @@
-#include "render/stereo.hpp"
+#include "plan/stereo.hpp"
 
-#include "render/number_text.hpp"
+#include "plan/number_text.hpp"
 
 #include <frustum/queries.hpp>
 #include <frustum/screen_projection.hpp>

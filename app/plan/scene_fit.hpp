@@ -5,8 +5,8 @@
 // and the range that would work. Pure: no GL.
 #pragma once
 
-#include "render/curved_mirror.hpp"
-#include "render/non_affine_pass.hpp"
+#include "plan/curved_mirror.hpp"
+#include "plan/non_affine_frustum.hpp"
 
 #include <frustum/lens.hpp>
 #include <frustum/matrix_pair.hpp>

@@ -1,4 +1,4 @@
-#include "render/view_tree.hpp"
+#include "plan/view_tree.hpp"
 
 #include <frustum/mirror.hpp>
 #include <frustum/portal.hpp>

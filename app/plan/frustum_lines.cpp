@@ -1,4 +1,4 @@
-#include "render/frustum_lines.hpp"
+#include "plan/frustum_lines.hpp"
 
 #include <frustum/queries.hpp>
 

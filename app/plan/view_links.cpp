@@ -1,4 +1,6 @@
-#include "render/view_links.hpp"
+#include "plan/view_links.hpp"
+
+#include "plan/mirror_placement.hpp"
 
 #include <frustum/lens.hpp>
 #include <frustum/portal.hpp>
@@ -50,31 +52,12 @@ frustum::Frame<float> frame(const glm::vec3& origin, const glm::vec3& x, const g
     return f;
 }
 
-int add_quad(scene::Scene& scene, const glm::mat4& world, const glm::vec4& color, const std::string& name) {
-    scene::Material material;
-    material.name = name;
-    material.base_color_factor = color;
-    material.double_sided = true;
-    scene.materials.push_back(material);
-    scene::Primitive quad;
-    quad.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}};
-    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    quad.material = static_cast<int>(scene.materials.size()) - 1;
-    scene.meshes.push_back(scene::Mesh{name, {quad}});
-    scene::Instance instance;
-    instance.mesh = static_cast<int>(scene.meshes.size()) - 1;
-    instance.world = world;
-    instance.node_name = name;
-    scene.instances.push_back(instance);
-    return static_cast<int>(scene.instances.size()) - 1;
-}
-
 } // namespace
 
 glm::mat4 link_world(const ViewLink& link, bool exit) {
     const frustum::Frame<float>& f = exit ? link.exit : link.entry;
-    return glm::mat4(glm::vec4(link.half_width_m * f.x, 0.0f), glm::vec4(link.half_height_m * f.y, 0.0f),
+    // add_quad_instance()'s quad is [-0.5, 0.5]^2: scale by the full size.
+    return glm::mat4(glm::vec4(2.0f * link.half_width_m * f.x, 0.0f), glm::vec4(2.0f * link.half_height_m * f.y, 0.0f),
                      glm::vec4(f.normal(), 0.0f), glm::vec4(f.origin, 1.0f));
 }
 
@@ -145,12 +128,12 @@ scene::Scene link_scene(std::vector<ViewLink>& links) {
     scene::Scene scene;
     for (ViewLink& link : links) {
         const bool mirror = link.kind == ViewLink::Kind::Mirror;
-        link.surface_instance = add_quad(scene, link_world(link, false),
+        link.surface_instance = add_quad_instance(scene, link_world(link, false),
                                          mirror ? glm::vec4(0.8f, 0.8f, 0.82f, 1.0f)
                                                 : glm::vec4(0.55f, 0.35f, 0.85f, 1.0f),
                                          mirror ? "mirror (link)" : "portal entry");
         if (!mirror) {
-            link.exit_instance = add_quad(scene, link_world(link, true),
+            link.exit_instance = add_quad_instance(scene, link_world(link, true),
                                           glm::vec4(0.95f, 0.55f, 0.2f, 1.0f), "portal exit");
         }
     }

@@ -7,7 +7,7 @@
 // depth. Pure: no GL.
 #pragma once
 
-#include "render/view_links.hpp"
+#include "plan/view_links.hpp"
 
 #include <frustum/crop.hpp>
 #include <frustum/culling.hpp>

@@ -2,7 +2,7 @@
 // rectangle it covers, and the camera its reflection is rendered with.
 #pragma once
 
-#include "render/effect.hpp"
+#include "plan/effect.hpp"
 
 #include <frustum/matrix_pair.hpp>
 #include <frustum/plane.hpp>

@@ -1,6 +1,6 @@
-#include "render/mirror_placement.hpp"
+#include "plan/mirror_placement.hpp"
 
-#include "render/number_text.hpp"
+#include "plan/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,31 +16,14 @@ std::string vec_text(const glm::vec3& v) {
     return "(" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + ")";
 }
 
-// The quad [-0.5, 0.5]^2 in the local XY plane, facing +Z, as a node named
-// "mirror" has it (scene.hpp), placed at `mirror` by an added instance.
+// The placed mirror: a quad spanning `mirror` (a1, a2 its edges).
 void add_mirror_instance(scene::Scene& scene, scene::MirrorRect mirror) {
-    scene::Material material;
-    material.name = "placed mirror";
-    material.base_color_factor = kMirrorColor;
-    material.double_sided = true;
-    scene.materials.push_back(material);
-
-    scene::Primitive quad;
-    quad.positions = {{-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}};
-    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    quad.material = static_cast<int>(scene.materials.size()) - 1;
-    scene.meshes.push_back(scene::Mesh{"placed mirror", {quad}});
-
     const glm::vec3 normal = glm::normalize(glm::cross(mirror.a1, mirror.a2));
     const glm::vec3 center = mirror.corner + 0.5f * (mirror.a1 + mirror.a2);
-    scene::Instance instance;
-    instance.mesh = static_cast<int>(scene.meshes.size()) - 1;
-    instance.world = glm::mat4(glm::vec4(mirror.a1, 0.0f), glm::vec4(mirror.a2, 0.0f), glm::vec4(normal, 0.0f),
-                               glm::vec4(center, 1.0f));
-    instance.node_name = "mirror (placed)";
-    scene.instances.push_back(instance);
-    mirror.instance = static_cast<int>(scene.instances.size()) - 1;
+    const glm::mat4 world(glm::vec4(mirror.a1, 0.0f), glm::vec4(mirror.a2, 0.0f), glm::vec4(normal, 0.0f),
+                          glm::vec4(center, 1.0f));
+    mirror.instance = add_quad_instance(scene, world, kMirrorColor, "placed mirror");
+    scene.instances.back().node_name = "mirror (placed)";
     scene.mirror = mirror;
 }
 
@@ -92,6 +75,26 @@ std::optional<std::string> place_mirror(scene::Scene& scene, const MirrorRequest
     return "mirror: floor under the model, y = " + number_text(floor_y) + ", " + number_text(side_m) + " x " +
            number_text(side_m) + " centred at x = " + number_text(middle.x) + ", z = " + number_text(middle.z) +
            " (the scene has no node named mirror; --mirror-plane or --mirror-rect place one by hand)";
+}
+
+int add_quad_instance(scene::Scene& scene, const glm::mat4& world, const glm::vec4& color, const std::string& name) {
+    scene::Material material;
+    material.name = name;
+    material.base_color_factor = color;
+    material.double_sided = true;
+    scene.materials.push_back(material);
+    scene::Primitive quad;
+    quad.positions = {{-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}};
+    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    quad.material = static_cast<int>(scene.materials.size()) - 1;
+    scene.meshes.push_back(scene::Mesh{name, {quad}});
+    scene::Instance instance;
+    instance.mesh = static_cast<int>(scene.meshes.size()) - 1;
+    instance.world = world;
+    instance.node_name = name;
+    scene.instances.push_back(instance);
+    return static_cast<int>(scene.instances.size()) - 1;
 }
 
 } // namespace render

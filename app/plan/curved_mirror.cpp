@@ -1,4 +1,4 @@
-#include "render/curved_mirror.hpp"
+#include "plan/curved_mirror.hpp"
 
 #include <frustum/from_planes.hpp>
 #include <frustum/queries.hpp>

@@ -72,7 +72,7 @@ frustum::Result<std::vector<ViewLink>> place_facing_links(const frustum::MatrixP
 // A scene of the links' quads (double-sided; mirrors light grey, portal
 // entries violet, exits orange), whose instances are the links'
 // surface_instance / exit_instance (which this sets). The quad of an
-// instance is [-1, 1]^2 in its local XY plane; link_world() places it.
+// instance is add_quad_instance()'s [-0.5, 0.5]^2; link_world() places it.
 scene::Scene link_scene(std::vector<ViewLink>& links);
 
 // The world matrix of a link's quad in link_scene(): the entry's (exit's).

@@ -1,4 +1,4 @@
-#include "render/mirror_motion.hpp"
+#include "plan/mirror_motion.hpp"
 
 #include <algorithm>
 #include <cmath>

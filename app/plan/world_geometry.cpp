@@ -1,4 +1,4 @@
-#include "render/world_geometry.hpp"
+#include "plan/world_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

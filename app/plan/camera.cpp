@@ -1,4 +1,4 @@
-#include "render/camera.hpp"
+#include "plan/camera.hpp"
 
 #include <frustum/projection.hpp>
 #include <frustum/queries.hpp>

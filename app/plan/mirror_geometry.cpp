@@ -1,4 +1,4 @@
-#include "render/mirror_geometry.hpp"
+#include "plan/mirror_geometry.hpp"
 
 #include <frustum/crop.hpp>
 #include <frustum/mirror.hpp>

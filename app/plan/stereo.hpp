@@ -7,7 +7,7 @@
 // any other camera (per-eye reflections, per-eye lens tiles).
 #pragma once
 
-#include "render/camera.hpp"
+#include "plan/camera.hpp"
 
 #include <frustum/matrix_pair.hpp>
 #include <frustum/result.hpp>

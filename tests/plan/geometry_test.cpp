@@ -1,11 +1,11 @@
 // The render library's math, without a GL context: the mirror's reflection
 // camera and the frustum line sets.
-#include "render_test_support.hpp"
+#include "showcase.hpp"
 
 #include <frustum/projection.hpp>
 #include <frustum/queries.hpp>
-#include <render/frustum_lines.hpp>
-#include <render/mirror_geometry.hpp>
+#include <plan/frustum_lines.hpp>
+#include <plan/mirror_geometry.hpp>
 
 namespace {
 

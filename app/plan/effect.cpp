@@ -1,4 +1,4 @@
-#include "render/effect.hpp"
+#include "plan/effect.hpp"
 
 namespace render {
 

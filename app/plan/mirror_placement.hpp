@@ -31,4 +31,10 @@ struct MirrorRequest {
 // empty when the scene's own mirror is kept.
 std::optional<std::string> place_mirror(scene::Scene& scene, const MirrorRequest& request);
 
+// Adds a double-sided quad [-0.5, 0.5]^2 in the local XY plane, facing +Z
+// (as a node named "mirror" has it, scene.hpp), with its own material of
+// `color` and one instance at `world`; returns the instance's index. The
+// placed mirror and the portal / recursion links (view_links.hpp) are these.
+int add_quad_instance(scene::Scene& scene, const glm::mat4& world, const glm::vec4& color, const std::string& name);
+
 } // namespace render
