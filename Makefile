@@ -5,7 +5,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan test-clang test-arm test-aarch64 bench fuzz web clean
+.PHONY: all deps build demo test test-asan test-clang test-arm test-aarch64 test-wasm bench fuzz web clean
 
 all: build
 
@@ -55,6 +55,11 @@ test-arm test-aarch64:
 	@bash scripts/install-deps.sh --arm
 	JOBS=$(JOBS) CMAKE_FLAGS="$(CMAKE_FLAGS)" bash scripts/test-arm.sh $(if $(filter test-aarch64,$@),aarch64)
 
+# The library and test_math as WebAssembly (emscripten), run under node.
+test-wasm:
+	@bash scripts/install-deps.sh --web
+	JOBS=$(JOBS) bash scripts/test-wasm.sh build-wasm
+
 bench: deps
 	@bash scripts/install-deps.sh --bench
 	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFRUSTUM_BUILD_BENCH=ON $(CMAKE_FLAGS)
@@ -73,4 +78,4 @@ web: deps $(BUILD)/CMakeCache.txt
 fuzz:
 	bash scripts/fuzz.sh $(FUZZ_SECONDS)
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) build-bench build-web build-clang build-arm
+	rm -rf $(BUILD) $(ASAN_BUILD) build-bench build-web build-wasm build-clang build-arm

@@ -3,6 +3,7 @@
 #include "vectors/camera.hpp"
 
 #include <frustum/crop.hpp>
+#include <frustum/detail/errors.hpp>
 #include <frustum/culling.hpp>
 #include <frustum/jitter.hpp>
 #include <frustum/portal.hpp>
@@ -148,8 +149,7 @@ const char* non_finite_field(const Answer& a) {
 std::string text(const Vec3& p) {
     std::string out = "(";
     for (int i = 0; i < 3; ++i) {
-        char buffer[64];
-        out += std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, p[i]).ptr);
+        out += frustum::detail::number(p[i]);
         out += i < 2 ? ", " : ")";
     }
     return out;

@@ -1,6 +1,8 @@
 #include "vectors/json_reader.hpp"
 
+#include <cerrno>
 #include <charconv>
+#include <cstdlib>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -9,6 +11,34 @@
 namespace vectors {
 
 namespace {
+
+// A JSON number token (already checked against the grammar) as a double:
+// std::from_chars where the standard library implements it for floating
+// point, else strtod on the token, which reads it the same way (correctly
+// rounded, "C" locale: the program never sets another). Debian's emscripten
+// ships libc++ 13, which declares from_chars(double&) but does not define it.
+struct ParsedDouble {
+    double value = 0.0;
+    bool out_of_range = false; // beyond a double's range (either way)
+    bool whole = false;        // the whole token was read
+};
+
+ParsedDouble parse_double(const char* first, const char* last) {
+    ParsedDouble parsed;
+#if defined(__cpp_lib_to_chars)
+    const auto [end, error] = std::from_chars(first, last, parsed.value);
+    parsed.out_of_range = error == std::errc::result_out_of_range;
+    parsed.whole = error == std::errc() && end == last;
+#else
+    const std::string token(first, last);
+    char* end = nullptr;
+    errno = 0;
+    parsed.value = std::strtod(token.c_str(), &end);
+    parsed.out_of_range = errno == ERANGE;
+    parsed.whole = end == token.c_str() + token.size();
+#endif
+    return parsed;
+}
 
 using nlohmann::json;
 
@@ -212,15 +242,15 @@ private:
         }
         const char* first = text_.data() + start;
         const char* last = text_.data() + pos_;
-        double value = 0.0;
-        const auto [end, error] = std::from_chars(first, last, value);
-        if (error == std::errc::result_out_of_range) {
+        const ParsedDouble parsed = parse_double(first, last);
+        double value = parsed.value;
+        if (parsed.out_of_range) {
             // Too large: +-infinity (the contract's "1e999"); too small: +-0.
             const bool overflow = seen_nonzero && magnitude + exponent > 0;
             value = overflow ? std::numeric_limits<double>::infinity() : 0.0;
             return negative ? -value : value;
         }
-        if (error != std::errc() || end != last) {
+        if (!parsed.whole) {
             throw SyntaxError{start, "malformed number"};
         }
         return value;

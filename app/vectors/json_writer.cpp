@@ -1,5 +1,7 @@
 #include "vectors/json_writer.hpp"
 
+#include <frustum/detail/errors.hpp>
+
 #include <charconv>
 #include <cstdio>
 
@@ -99,9 +101,7 @@ void write_value(std::string& out, const ordered_json& v, int indent) {
 } // namespace
 
 std::string number_text(double value) {
-    char buffer[64];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
+    return frustum::detail::number(value); // std::to_chars's text, also where libc++ lacks it
 }
 
 std::string write_json(const nlohmann::ordered_json& value) {

@@ -116,9 +116,9 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
         const CropMap<T> map = crop_map(CropRect<T>{T(0), T(y0), T(1), T(y1 - y0), T(1), T(height_px)});
         const T inv_sy = T(1) / map.sy;
         TileRow<T>& out = tile_rows[static_cast<std::size_t>(r)];
-        for (int j = 0; j < 4; ++j) {
-            out.row1[j] = m.c[j][1] * map.sy + m.c[j][3] * map.ty;
-        }
+        // Built whole: a lane of a vector extension is not assignable in clang.
+        const auto row1_of = [&](int j) { return m.c[j][1] * map.sy + m.c[j][3] * map.ty; };
+        out.row1 = V4<T>{row1_of(0), row1_of(1), row1_of(2), row1_of(3)};
         out.inv1 = inv.c[1] * inv_sy;
         out.inv3_term = (map.ty * inv_sy) * inv.c[1];
         out.y0 = y0;

@@ -31,7 +31,6 @@ struct Double4 {
     Double4(double a, double b, double c, double d) : lo{a, b}, hi{c, d} {}
     Double4(Double2 l, Double2 h) : lo(l), hi(h) {}
     double operator[](int i) const { return i < 2 ? lo[i] : hi[i - 2]; }
-    double& operator[](int i) { return i < 2 ? lo[i] : hi[i - 2]; }
 };
 #define FRUSTUM_DOUBLE4_OP(op)                                                                                    \
     inline Double4 operator op(const Double4& a, const Double4& b) { return {a.lo op b.lo, a.hi op b.hi}; }       \
