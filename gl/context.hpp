@@ -108,7 +108,9 @@ frustum::Result<std::unique_ptr<Context>> create_offscreen_context(Backend backe
                                                                   const ContextOptions& options);
 
 // EGL first, then OSMesa; if both fail the message holds both reasons.
+// `on_fallback` (optional) hears EGL's error before OSMesa is tried: the
+// app's one fallback note (frustum-demo's make_context()).
 frustum::Result<std::unique_ptr<Context>> create_offscreen_context_with_fallback(
-    const ContextOptions& options);
+    const ContextOptions& options, const std::function<void(const std::string& egl_error)>& on_fallback = {});
 
 } // namespace gl

@@ -20,10 +20,13 @@ frustum::Result<std::unique_ptr<Context>> create_offscreen_context(Backend backe
 }
 
 frustum::Result<std::unique_ptr<Context>> create_offscreen_context_with_fallback(
-    const ContextOptions& options) {
+    const ContextOptions& options, const std::function<void(const std::string& egl_error)>& on_fallback) {
     auto egl = EglSurfacelessContext::create(options);
     if (egl) {
         return egl;
+    }
+    if (on_fallback) {
+        on_fallback(egl.error());
     }
     auto osmesa = OsMesaContext::create(options);
     if (osmesa) {

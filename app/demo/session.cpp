@@ -45,16 +45,9 @@ frustum::Result<std::unique_ptr<gl::Context>> make_context(const Settings& setti
     if (settings.backend) {
         return gl::create_offscreen_context(*settings.backend, options);
     }
-    auto egl = gl::create_offscreen_context(gl::Backend::Egl, options);
-    if (egl) {
-        return egl;
-    }
-    reporter.note("note: no EGL context (" + egl.error() + "); using OSMesa");
-    auto osmesa = gl::create_offscreen_context(gl::Backend::OsMesa, options);
-    if (!osmesa) {
-        return frustum::Error{"no GL context: egl: " + egl.error() + "; osmesa: " + osmesa.error()};
-    }
-    return osmesa;
+    return gl::create_offscreen_context_with_fallback(options, [&reporter](const std::string& egl_error) {
+        reporter.note("note: no EGL context (" + egl_error + "); using OSMesa");
+    });
 }
 
 std::optional<Failure> start_gl(Session& session, const Settings& settings, const Reporter& reporter,

@@ -53,9 +53,9 @@ std::optional<Failure> start_gl(Session& session, const Settings& settings, cons
                                 const ContextMaker& make = {});
 
 // The offscreen context: exactly --backend when given, otherwise EGL, then
-// OSMesa with a note (when both fail, the error holds both reasons); the
-// app's one fallback (gl::create_offscreen_context_with_fallback has no
-// note and serves the GL tests). --verbose requests a debug context whose
+// OSMesa with a note (when both fail, the error holds both reasons):
+// gl::create_offscreen_context_with_fallback() with the note, the one
+// fallback of the app and the GL tests. --verbose requests a debug context whose
 // KHR_debug messages go to reporter.note.
 frustum::Result<std::unique_ptr<gl::Context>> make_context(const Settings& settings, const Reporter& reporter);
 

@@ -80,7 +80,7 @@ bool parse_arguments(int argc, char** argv, web::ViewerOptions& options) {
 
 } // namespace
 
-// The page's effect buttons: the same as pressing 1..7 in the window.
+// The page's effect buttons: the same as pressing 1..9 in the window.
 extern "C" EMSCRIPTEN_KEEPALIVE void frustum_web_select_effect(int index) {
     if (g_viewer && index >= 0 && index < static_cast<int>(std::size(render::kAllEffects))) {
         gl::KeyPressed press;

@@ -3,7 +3,7 @@
 #include <plan/camera.hpp>
 #include <scene/load_gltf.hpp>
 #include <window/frame.hpp>
-#include <window/window_cameras.hpp>
+#include <plan/camera.hpp>
 
 #include <type_traits>
 #include <utility>
@@ -79,7 +79,7 @@ frustum::Result<bool> Viewer::draw_if_changed(int width_px, int height_px) {
         return false;
     }
     if (!cameras_) {
-        auto made = window::window_cameras(scene_, camera_index_, width_px_, height_px_);
+        auto made = render::make_cameras(scene_, camera_index_, width_px_, height_px_);
         if (!made) {
             return frustum::Error{made.error()};
         }

@@ -1,6 +1,7 @@
 #include "frustum/mirror.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/finite.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_updates.hpp"
 #include "frustum/projection.hpp"
@@ -95,10 +96,7 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
 
 namespace {
 
-template <class T>
-bool finite3(const Vec3<T>& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+using detail::finite3;
 
 // The camera basis (rows of the view rotation) and near distance.
 template <class T>

@@ -39,19 +39,24 @@ fi
 
 "$demo" render --scene "$source_dir/assets/showcase.gltf" --effect all --size "$size" --out "$work/desktop" >/dev/null
 
-# Tolerance, measured (docs/web.md): SwiftShader and llvmpipe produce the
-# same colour for 99.7% of the pixels; they disagree on the coverage of some
-# silhouette edge pixels, 31-66 of the 57600 (0.05-0.12%) by more than 16 in
-# a channel (up to 172), mean channel difference 0.04-0.10. Pinned at about
-# twice the worst: at most 0.25% over 16 and a mean of at most 0.25. The
-# mirror frame against the plain one is 4.6% over, mean 1.6.
-tolerance=16 max_fraction=0.0025 max_mean=0.25
+# Tolerance, measured (docs/web.md), both sides with 4x MSAA (the renderer's
+# default since MSAA landed): SwiftShader and llvmpipe resolve some
+# silhouette edge pixels differently: 157-173 of the 57600 (0.27-0.30%) by
+# more than 16 in a channel for plain, mirror, tiles, lens and nonaffine, 530
+# (0.92%) for curved (its patch edges inside the cap too), mean channel
+# difference 0.06-0.25 (2026-12-02). Pinned at about twice the worst: 0.6%
+# (curved 1.8%) over 16 and a mean of at most 0.5. Without MSAA on the
+# desktop side the page differs by 2.8-4.6% (mean 0.7-1.2): the bound tells
+# the two apart; the mirror frame against the plain one is 4.6% over, mean 1.6.
+tolerance=16 max_mean=0.5
 status=0
 # frustum: not compared, see docs/web.md (SwiftShader does not draw the
 # reflection camera's long edges through infinity that llvmpipe draws).
-for effect in plain mirror tiles curved lens nonaffine; do
+for effect in plain mirror tiles curved lens nonaffine portal recursion; do
   browser --screenshot="$work/browser/$effect.png" "file://$page#capture=$size&effect=$effect" >/dev/null
   printf '%-10s ' "$effect"
+  max_fraction=0.006
+  [ "$effect" = curved ] && max_fraction=0.018
   "$compare" "$work/browser/$effect.png" "$work/desktop/$effect.png" $tolerance $max_fraction $max_mean \
     "$work/browser/$effect-diff.png" || status=1
 done
