@@ -28,7 +28,7 @@ bool parse_number(const char* text, double& out) {
 
 static int run_main(int argc, char** argv) {
     explain::Options options;
-    for (int i = 1; i < argc; ++i) {
+    for (int i = 1; i < argc; i += 2) { // each option is followed by its number
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h") {
             usage(stdout);
@@ -49,7 +49,6 @@ static int run_main(int argc, char** argv) {
                          i + 1 < argc ? argv[i + 1] : "nothing");
             return 2;
         }
-        ++i;
     }
     const auto text = explain::walkthrough(options);
     if (!text) {
