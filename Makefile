@@ -1,7 +1,7 @@
 # Front door. `make demo` and `make test` install what is missing (Debian
 # packages, via scripts/install-deps.sh), configure, build and run.
 BUILD      ?= build
-ASAN_BUILD ?= build-asan
+ASAN_BUILD ?= build-asan-clang
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
@@ -32,9 +32,12 @@ test: build
 	$(MAKE) --no-print-directory test-asan
 
 # The whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer
-# (without `package` and `repo`, which build their own trees, not sanitized).
-test-asan: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFRUSTUM_SANITIZE=ON $(CMAKE_FLAGS)
+# (without `package` and `repo`, which build their own trees, not sanitized),
+# built with clang++ (the compiler of phones' SDKs): every `make test` runs
+# the suite under both compilers.
+test-asan:
+	@bash scripts/install-deps.sh --window --clang
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFRUSTUM_SANITIZE=ON -DCMAKE_CXX_COMPILER=clang++ $(CMAKE_FLAGS)
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	  UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -LE 'package|repo|web'

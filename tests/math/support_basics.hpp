@@ -24,14 +24,9 @@
 // Set when built with -DFRUSTUM_SANITIZE=ON (ASan + UBSan, which traps a
 // float division by zero): the few inputs that make the library divide by
 // zero are then left out, so one known problem cannot abort the suite.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(FRUSTUM_SANITIZED)
 #define MTEST_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MTEST_SANITIZED 1
-#endif
-#endif
-#ifndef MTEST_SANITIZED
+#else
 #define MTEST_SANITIZED 0
 #endif
 

@@ -24,11 +24,7 @@ constexpr long kAddressSpaceCap = 2048L << 20; // 2 GiB
 // MiB in an AddressSanitizer build (redzones and the freed-memory
 // quarantine about double the heap; the address-space cap is left out
 // there, see support.cpp).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr long kRefusedPeakKb = 400 * 1024;
-#else
-constexpr long kRefusedPeakKb = 200 * 1024;
-#endif
+constexpr long kRefusedPeakKb = (rob::kSanitized ? 400 : 200) * 1024;
 
 std::string asset() { return R"("asset": {"version": "2.0"})"; }
 

@@ -62,12 +62,6 @@ std::vector<std::string> list_dir(const fs::path& dir) {
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
 std::string slurp(const fs::path& path) {
     std::ifstream file(path, std::ios::binary);
     std::ostringstream text;
@@ -94,7 +88,7 @@ std::string slurp(const fs::path& path) {
     // An AddressSanitizer build reserves terabytes of shadow memory at start,
     // which no address-space cap admits: there the cap is left out and the
     // peak-RSS bound of each case still holds (make test-asan).
-    if (launch.address_space_limit_bytes >= 0 && !kAddressSanitizer) {
+    if (launch.address_space_limit_bytes >= 0 && !kSanitized) {
         const rlimit limit{rlim_t(launch.address_space_limit_bytes), rlim_t(launch.address_space_limit_bytes)};
         if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
     }

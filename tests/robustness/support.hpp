@@ -11,6 +11,15 @@
 
 namespace rob {
 
+// Built with -DFRUSTUM_SANITIZE=ON (CMake defines FRUSTUM_SANITIZED): the
+// AddressSanitizer's shadow memory cannot be mapped under an address-space
+// cap, so run() leaves the cap out there, and heaps are about twice as big.
+#if defined(FRUSTUM_SANITIZED)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 // Every phrase occurs in text; the first missing one otherwise.
 std::optional<std::string> missing_phrase(const std::string& text, const std::vector<std::string>& phrases);
 
