@@ -12,6 +12,8 @@ namespace render {
 namespace {
 
 constexpr float kMinDepthPerNear = 2.0f; // the anchor lies at least twice the near distance away
+constexpr float kFrameMargin = 0.06f;    // a portal entry's frame: this times its smaller half size wider on each side
+constexpr float kFrameDepth = 0.25f;     // and this times that margin behind the entry
 
 // E, f, R, U, the anchor A and the frame's half sizes there (view_links.hpp).
 struct Anchor {
@@ -135,6 +137,16 @@ scene::Scene link_scene(std::vector<ViewLink>& links) {
         if (!mirror) {
             link.exit_instance = add_quad_instance(scene, link_world(link, true),
                                           glm::vec4(0.95f, 0.55f, 0.2f, 1.0f), "portal exit");
+            // The entry's frame: a dark quad kFrameMargin larger on each side,
+            // kFrameDepth behind the entry (like the showcase's mirror_backing),
+            // so the entry's edge shows whatever its view looks like.
+            const float rim_m = kFrameMargin * std::min(link.half_width_m, link.half_height_m);
+            ViewLink rim = link;
+            rim.half_width_m += rim_m;
+            rim.half_height_m += rim_m;
+            rim.entry.origin -= kFrameDepth * rim_m * link.entry.normal();
+            link.frame_instance = add_quad_instance(scene, link_world(rim, false), glm::vec4(0.12f, 0.1f, 0.16f, 1.0f),
+                                                    "portal entry frame");
         }
     }
     return scene;
