@@ -38,6 +38,7 @@ set multiplot layout 2,2 title "Two facing mirrors at 1280x720: tight crops + cu
 set xlabel "recursion depth"
 set grid
 set key top left
+set offsets 0, 0, graph 0.3, 0
 set yrange [0:*]
 do for [layout in "beside room"] {
   name = layout eq "beside" ? "beside the showcase's model" : "room, camera looking into one mirror"

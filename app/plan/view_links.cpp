@@ -63,6 +63,15 @@ glm::mat4 link_world(const ViewLink& link, bool exit) {
                      glm::vec4(f.normal(), 0.0f), glm::vec4(f.origin, 1.0f));
 }
 
+glm::mat4 entry_frame_world(const ViewLink& link) {
+    const float rim_m = kFrameMargin * std::min(link.half_width_m, link.half_height_m);
+    ViewLink rim = link;
+    rim.half_width_m += rim_m;
+    rim.half_height_m += rim_m;
+    rim.entry.origin -= kFrameDepth * rim_m * link.entry.normal();
+    return link_world(rim, false);
+}
+
 std::vector<glm::vec3> ViewLink::quad() const {
     const glm::vec3 u = half_width_m * entry.x, v = half_height_m * entry.y;
     return {entry.origin - u - v, entry.origin + u - v, entry.origin + u + v, entry.origin - u + v};
@@ -137,15 +146,7 @@ scene::Scene link_scene(std::vector<ViewLink>& links) {
         if (!mirror) {
             link.exit_instance = add_quad_instance(scene, link_world(link, true),
                                           glm::vec4(0.95f, 0.55f, 0.2f, 1.0f), "portal exit");
-            // The entry's frame: a dark quad kFrameMargin larger on each side,
-            // kFrameDepth behind the entry (like the showcase's mirror_backing),
-            // so the entry's edge shows whatever its view looks like.
-            const float rim_m = kFrameMargin * std::min(link.half_width_m, link.half_height_m);
-            ViewLink rim = link;
-            rim.half_width_m += rim_m;
-            rim.half_height_m += rim_m;
-            rim.entry.origin -= kFrameDepth * rim_m * link.entry.normal();
-            link.frame_instance = add_quad_instance(scene, link_world(rim, false), glm::vec4(0.12f, 0.1f, 0.16f, 1.0f),
+            link.frame_instance = add_quad_instance(scene, entry_frame_world(link), glm::vec4(0.12f, 0.1f, 0.16f, 1.0f),
                                                     "portal entry frame");
         }
     }

@@ -78,5 +78,10 @@ scene::Scene link_scene(std::vector<ViewLink>& links);
 
 // The world matrix of a link's quad in link_scene(): the entry's (exit's).
 glm::mat4 link_world(const ViewLink& link, bool exit);
+// A portal entry's frame in link_scene(): a dark quad 6% of the entry's
+// smaller half size wider on each side, a quarter of that behind the entry
+// (like the showcase's mirror_backing), so the entry's edge shows whatever
+// its view looks like.
+glm::mat4 entry_frame_world(const ViewLink& link);
 
 } // namespace render
