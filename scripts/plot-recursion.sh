@@ -28,7 +28,7 @@ for layout in ("beside", "room"):
         print("# depth tight_ms full_ms tight_fs full_fs", file=f)
         for d in range(0, 7):
             t = rows[f"recursion/{layout}/tight/depth:{d}"]
-            full = rows.get(f"recursion/{layout}/full/depth:{d}", t)  # depth 0: one frame for both
+            full = rows[f"recursion/{layout}/full/depth:{d}"]
             print(d, t["real_time"], full["real_time"], t["fs_invocations"], full["fs_invocations"], file=f)
 PY
 gnuplot <<GNUPLOT

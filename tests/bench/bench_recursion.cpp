@@ -10,12 +10,14 @@
 //   full:  the same views over the whole viewport with the mirror plane as
 //          a fragment clip plane and no culling (a Reflector chain, a
 //          stencil portal renderer).
-// Depth 0 is the camera's own view alone (the mirrors drawn plain): the
-// fragments of the levels >= 1 are a row's minus depth 0's.
+// Depth 0 is the camera's own view alone (the mirrors drawn plain; culled
+// in tight, not in full): the fragments of the levels >= 1 are a row's
+// minus depth 0's.
 // Counters per frame: fragments (GL_FRAGMENT_SHADER_INVOCATIONS_ARB when the
 // context has it, and samples written), views, primitives drawn and culled,
 // culled per level. cpu/<layout>/recursion_plan: plan_view_tree() alone
-// (every pair, rectangle and culling pair of the frame).
+// (every pair, rectangle and culling pair of the frame). target/...: the
+// cost of a full-viewport view's texture, created per frame or kept.
 #include "bench_recursion_room.hpp"
 #include "bench_render_setup.hpp"
 
@@ -166,9 +168,48 @@ void plan_case(benchmark::State& state, const std::string& name, int depth) {
     state.counters["views"] = static_cast<double>(views);
 }
 
+// What a view's own texture costs: a full-viewport target (colour texture +
+// depth, as draw_recursion_frame() makes per view and frame) created,
+// cleared and resolved, against clearing one that already exists (what a
+// renderer that keeps its targets pays).
+void target_case(benchmark::State& state, bool create) {
+    Gpu& s = gpu();
+    const render::PassContext ctx = s.gpu->pass();
+    const gl::OffscreenTargetOptions options{kWidthPx, kHeightPx, gl::ColorStorage::Texture, gl::DepthFormat::Depth24,
+                                             ctx.samples};
+    auto kept = gl::OffscreenTarget::create(*s.gpu->fn, options);
+    if (!kept) {
+        state.SkipWithError(kept.error().c_str());
+        return;
+    }
+    for (auto _ : state) {
+        if (create) {
+            auto target = gl::OffscreenTarget::create(*s.gpu->fn, options);
+            if (!target) {
+                state.SkipWithError(target.error().c_str());
+                return;
+            }
+            render::begin_frame(ctx);
+            target->resolve();
+            s.gpu->fn->Finish();
+        } else {
+            kept->bind();
+            render::begin_frame(ctx);
+            kept->resolve();
+            s.gpu->fn->Finish();
+        }
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+    benchmark::RegisterBenchmark("target/full_viewport/create_clear", [](benchmark::State& s) { target_case(s, true); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark("target/full_viewport/clear_only", [](benchmark::State& s) { target_case(s, false); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
     for (const std::string name : {"beside", "room"}) {
         for (int depth = 0; depth <= 6; ++depth) {
             const std::string d = std::to_string(depth);
@@ -178,15 +219,16 @@ int main(int argc, char** argv) {
                                          })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
-            if (depth == 0) {
-                continue; // no views but the camera's: full and tight are the same frame
-            }
+            // Depth 0: the camera's view alone, culled (tight) or not (full).
             benchmark::RegisterBenchmark(("recursion/" + name + "/full/depth:" + d).c_str(),
                                          [name, depth](benchmark::State& s) {
                                              frame_case(s, name, depth, render::ViewBounds::FullViewport);
                                          })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
+            if (depth == 0) {
+                continue;
+            }
             benchmark::RegisterBenchmark(("cpu/" + name + "/recursion_plan/depth:" + d).c_str(),
                                          [name, depth](benchmark::State& s) { plan_case(s, name, depth); })
                 ->Unit(benchmark::kMicrosecond);
