@@ -12,6 +12,8 @@ namespace render {
 namespace {
 
 constexpr float kMinDepthPerNear = 2.0f; // the anchor lies at least twice the near distance away
+constexpr float kFrameMargin = 0.06f;    // a portal entry's frame: this times its smaller half size wider on each side
+constexpr float kFrameDepth = 0.25f;     // and this times that margin behind the entry
 
 // E, f, R, U, the anchor A and the frame's half sizes there (view_links.hpp).
 struct Anchor {
@@ -59,6 +61,15 @@ glm::mat4 link_world(const ViewLink& link, bool exit) {
     // add_quad_instance()'s quad is [-0.5, 0.5]^2: scale by the full size.
     return glm::mat4(glm::vec4(2.0f * link.half_width_m * f.x, 0.0f), glm::vec4(2.0f * link.half_height_m * f.y, 0.0f),
                      glm::vec4(f.normal(), 0.0f), glm::vec4(f.origin, 1.0f));
+}
+
+glm::mat4 entry_frame_world(const ViewLink& link) {
+    const float rim_m = kFrameMargin * std::min(link.half_width_m, link.half_height_m);
+    ViewLink rim = link;
+    rim.half_width_m += rim_m;
+    rim.half_height_m += rim_m;
+    rim.entry.origin -= kFrameDepth * rim_m * link.entry.normal();
+    return link_world(rim, false);
 }
 
 std::vector<glm::vec3> ViewLink::quad() const {
@@ -135,6 +146,8 @@ scene::Scene link_scene(std::vector<ViewLink>& links) {
         if (!mirror) {
             link.exit_instance = add_quad_instance(scene, link_world(link, true),
                                           glm::vec4(0.95f, 0.55f, 0.2f, 1.0f), "portal exit");
+            link.frame_instance = add_quad_instance(scene, entry_frame_world(link), glm::vec4(0.12f, 0.1f, 0.16f, 1.0f),
+                                                    "portal entry frame");
         }
     }
     return scene;

@@ -30,6 +30,7 @@ struct ViewLink {
     float half_height_m = 0.5f;      // along y
     int surface_instance = -1;       // in link_scene(): the entry quad, drawn with the view's texture
     int exit_instance = -1;          // portal: the exit quad
+    int frame_instance = -1;         // portal: a dark frame just behind the entry quad
 
     // The entry quad's corners, counter-clockwise seen from its front.
     std::vector<glm::vec3> quad() const;
@@ -70,12 +71,17 @@ frustum::Result<std::vector<ViewLink>> place_facing_links(const frustum::MatrixP
                                                           const scene::Bounds& bounds, LinkSet set);
 
 // A scene of the links' quads (double-sided; mirrors light grey, portal
-// entries violet, exits orange), whose instances are the links'
-// surface_instance / exit_instance (which this sets). The quad of an
+// entries violet with a dark frame just behind them, exits orange), whose instances are the links'
+// surface_instance / exit_instance / frame_instance (which this sets). The quad of an
 // instance is add_quad_instance()'s [-0.5, 0.5]^2; link_world() places it.
 scene::Scene link_scene(std::vector<ViewLink>& links);
 
 // The world matrix of a link's quad in link_scene(): the entry's (exit's).
 glm::mat4 link_world(const ViewLink& link, bool exit);
+// A portal entry's frame in link_scene(): a dark quad 6% of the entry's
+// smaller half size wider on each side, a quarter of that behind the entry
+// (like the showcase's mirror_backing), so the entry's edge shows whatever
+// its view looks like.
+glm::mat4 entry_frame_world(const ViewLink& link);
 
 } // namespace render

@@ -87,9 +87,13 @@ frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, 
         ViewLink& link = (*placed)[i];
         link.surface_instance = group.links[i].surface_instance;
         link.exit_instance = group.links[i].exit_instance;
+        link.frame_instance = group.links[i].frame_instance;
         group.quads.set_instance_world(static_cast<std::size_t>(link.surface_instance), link_world(link, false));
         if (link.exit_instance >= 0) {
             group.quads.set_instance_world(static_cast<std::size_t>(link.exit_instance), link_world(link, true));
+        }
+        if (link.frame_instance >= 0) {
+            group.quads.set_instance_world(static_cast<std::size_t>(link.frame_instance), entry_frame_world(link));
         }
     }
     group.links = std::move(*placed);
