@@ -2,6 +2,7 @@
 
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/pair_updates.hpp"
+#include "frustum/detail/tile_grid_writer.hpp"
 
 #include <cmath>
 
@@ -28,124 +29,108 @@ Result<MatrixPair<T>> uncrop(const MatrixPair<T>& pair, const CropRect<T>& rect)
     return detail::scale_offset_xy(pair, T(1) / c.sx, -c.tx / c.sx, T(1) / c.sy, -c.ty / c.sy);
 }
 
-namespace {
-
-// What one column of tiles shares: rows 0, 2 and 3 of M' (row 1 left 0)
-// and columns 0 and 3 (its first term) of the inverse; one row of tiles
-// likewise row 1 of M' and the term of column 1. The same expressions as
-// detail::scale_offset_xy, in the same order, so every tile has the bits
-// crop() gives it.
 template <class T>
-struct TileColumn {
-    detail::Cols<T> m; // columns of M' with row 1 still to fill
-    detail::V4<T> inv0, inv3_partial;
-    int x0, width;
-};
-template <class T>
-struct TileRow {
-    detail::V4<T> row1; // entry j: row 1 of column j of M'
-    detail::V4<T> inv1, inv3_term;
-    int y0, height;
-};
-
-int tile_edge(int i, int size, int count) {
-    return static_cast<int>(static_cast<long long>(i) * size / count);
-}
-
-// Column j of the column's M' with entry 1 replaced by row1[j] (no
-// arithmetic, so the bits stay).
-template <class T>
-FRUSTUM_HOT_INLINE detail::V4<T> with_row1(const detail::V4<T>& column, const detail::V4<T>& row1, int j) {
-    return detail::with_lane<1>(column, row1[j]);
+MatrixPair<T> TileGrid<T>::pair(std::size_t i) const {
+    const Mat4<T>& m = matrices_[i];
+    const Mat4<T>& inv = inverses_[i];
+    return detail::PairFactory::keep_sign_columns<T>(m[0], m[1], m[2], m[3], inv[0], inv[1], inv[2], inv[3],
+                                                     traits_);
 }
 
 template <class T>
-struct TileMaker {
-    int c, r;
-    const TileColumn<T>& tc;
-    const TileRow<T>& tr;
-    const Vec4<T>& inv2;
-    unsigned traits;
-    FRUSTUM_HOT_INLINE operator Tile<T>() const { // NOLINT: implicit by design (emplace_back)
-        using detail::store;
-        return Tile<T>{c, r, tc.x0, tr.y0, tc.width, tr.height,
-                       detail::PairFactory::keep_sign_columns<T>(
-                           store<T>(with_row1<T>(tc.m.c[0], tr.row1, 0)), store<T>(with_row1<T>(tc.m.c[1], tr.row1, 1)),
-                           store<T>(with_row1<T>(tc.m.c[2], tr.row1, 2)), store<T>(with_row1<T>(tc.m.c[3], tr.row1, 3)),
-                           store<T>(tc.inv0), store<T>(tr.inv1), inv2, store<T>(tc.inv3_partial - tr.inv3_term), traits)};
-    }
-};
+Tile<T> TileGrid<T>::tile(std::size_t i) const {
+    const int column = static_cast<int>(i % static_cast<std::size_t>(columns_));
+    const int row = static_cast<int>(i / static_cast<std::size_t>(columns_));
+    return Tile<T>{column, row, x_px(column), y_px(row), width_px(column), height_px(row), pair(i)};
+}
 
-} // namespace
-
+// Batched (issue 14). The crop map of a tile is the x map of its column and
+// the y map of its row, so each is computed once per column and once per
+// row of tiles, with the expressions of detail::scale_offset_xy in its
+// order: every tile gets the bits crop() gives it. A column of tiles holds
+// rows 0, 2 and 3 of every column of M' (row 1 still open), column 0 of the
+// inverse and the first term of column 3; a row of tiles holds row 1 of M',
+// column 1 of the inverse and the second term of column 3. Per tile: four
+// lane inserts, one subtraction and eight whole-column stores.
 template <class T>
-Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns,
-                                        int rows) {
+Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns, int rows,
+                  TileGrid<T>& out) {
+    using detail::TileGridWriter;
+    using detail::V4;
     if (width_px < 1 || height_px < 1 || columns < 1 || rows < 1 || columns > width_px || rows > height_px) {
+        TileGridWriter::clear(out);
         return detail::error<T>("crop_tiles", "need 1 <= columns <= width_px and 1 <= rows <= height_px",
                                 {{"width_px", T(width_px)}, {"height_px", T(height_px)},
                                  {"columns", T(columns)}, {"rows", T(rows)}});
     }
-    using detail::V4;
+    TileGridWriter::layout(out, width_px, height_px, columns, rows, detail::PairFactory::traits(pair));
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    // Batched (issue 14): the per-axis crop maps are computed once per
-    // column and once per row of tiles; a tile only assembles its columns
-    // (four lane inserts and one subtraction) and is written in place.
-    std::vector<TileColumn<T>> tile_columns(static_cast<std::size_t>(columns));
+
+    // Per column of tiles, six vectors: columns 0-3 of M' with row 1 open,
+    // inverse column 0, and inverse column 3 less its row term.
+    constexpr std::size_t kParts = 6;
+    Vec4<T>* parts = TileGridWriter::scratch(out, kParts * static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c) {
-        const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
+        const int x0 = out.x_px(c), x1 = out.x_px(c + 1);
         const CropMap<T> map = crop_map(CropRect<T>{T(x0), T(0), T(x1 - x0), T(1), T(width_px), T(1)});
         const T inv_sx = T(1) / map.sx;
         // scale_offset_xy's column with sy = 1, ty = 0: rows 2 and 3 are
         // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0, as crop() forms them.
         const V4<T> scale{map.sx, T(0), T(1), T(1)};
         const V4<T> offset{map.tx, T(0), T(0), T(0)};
-        TileColumn<T>& out = tile_columns[static_cast<std::size_t>(c)];
+        Vec4<T>* part = parts + kParts * static_cast<std::size_t>(c);
         for (int j = 0; j < 4; ++j) {
-            out.m.c[j] = m.c[j] * scale + detail::lane<3>(m.c[j]) * offset;
+            part[j] = detail::store<T>(m.c[j] * scale + detail::lane<3>(m.c[j]) * offset);
         }
-        out.inv0 = inv.c[0] * inv_sx;
-        out.inv3_partial = inv.c[3] - (map.tx * inv_sx) * inv.c[0];
-        out.x0 = x0;
-        out.width = x1 - x0;
+        part[4] = detail::store<T>(inv.c[0] * inv_sx);
+        part[5] = detail::store<T>(inv.c[3] - (map.tx * inv_sx) * inv.c[0]);
     }
-    std::vector<TileRow<T>> tile_rows(static_cast<std::size_t>(rows));
+    const V4<T> inv2 = inv.c[2];
+    Mat4<T>* matrices = TileGridWriter::matrices(out);
+    Mat4<T>* inverses = TileGridWriter::inverses(out);
     for (int r = 0; r < rows; ++r) {
-        const int y0 = tile_edge(r, height_px, rows), y1 = tile_edge(r + 1, height_px, rows);
+        const int y0 = out.y_px(r), y1 = out.y_px(r + 1);
         const CropMap<T> map = crop_map(CropRect<T>{T(0), T(y0), T(1), T(y1 - y0), T(1), T(height_px)});
         const T inv_sy = T(1) / map.sy;
-        TileRow<T>& out = tile_rows[static_cast<std::size_t>(r)];
-        // Built whole: a lane of a vector extension is not assignable in clang.
-        const auto row1_of = [&](int j) { return m.c[j][1] * map.sy + m.c[j][3] * map.ty; };
-        out.row1 = V4<T>{row1_of(0), row1_of(1), row1_of(2), row1_of(3)};
-        out.inv1 = inv.c[1] * inv_sy;
-        out.inv3_term = (map.ty * inv_sy) * inv.c[1];
-        out.y0 = y0;
-        out.height = y1 - y0;
-    }
-    const Vec4<T> inv2 = pair.inverse()[2];
-    const unsigned traits = detail::PairFactory::traits(pair);
-
-    std::vector<Tile<T>> tiles;
-    tiles.reserve(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
-    for (int r = 0; r < rows; ++r) {
-        const TileRow<T>& tr = tile_rows[static_cast<std::size_t>(r)];
+        const T row1_0 = m.c[0][1] * map.sy + m.c[0][3] * map.ty;
+        const T row1_1 = m.c[1][1] * map.sy + m.c[1][3] * map.ty;
+        const T row1_2 = m.c[2][1] * map.sy + m.c[2][3] * map.ty;
+        const T row1_3 = m.c[3][1] * map.sy + m.c[3][3] * map.ty;
+        const V4<T> inv1 = inv.c[1] * inv_sy;
+        const V4<T> inv3_term = (map.ty * inv_sy) * inv.c[1];
+        const std::size_t first = out.index(0, r);
         for (int c = 0; c < columns; ++c) {
-            const TileColumn<T>& tc = tile_columns[static_cast<std::size_t>(c)];
-            // emplace_back of a converter: the Tile is the prvalue its
-            // conversion returns, so it is built straight in the vector's
-            // storage (no temporary Tile copied in).
-            tiles.emplace_back(TileMaker<T>{c, r, tc, tr, inv2, traits});
+            const Vec4<T>* part = parts + kParts * static_cast<std::size_t>(c);
+            const std::size_t i = first + static_cast<std::size_t>(c);
+            // Entry 1 of each column replaced (no arithmetic, so the bits stay).
+            detail::store_columns<T>(matrices[i], detail::with_lane<1>(detail::load(part[0]), row1_0),
+                                     detail::with_lane<1>(detail::load(part[1]), row1_1),
+                                     detail::with_lane<1>(detail::load(part[2]), row1_2),
+                                     detail::with_lane<1>(detail::load(part[3]), row1_3));
+            detail::store_columns<T>(inverses[i], detail::load(part[4]), inv1, inv2,
+                                     detail::load(part[5]) - inv3_term);
         }
     }
-    return tiles;
+    return {};
+}
+
+template <class T>
+Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns,
+                                        int rows) {
+    TileGrid<T> grid;
+    if (Status status = crop_tiles(pair, width_px, height_px, columns, rows, grid); !status) {
+        return status.take_error();
+    }
+    return detail::tiles_of(grid);
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                                   \
     template Result<MatrixPair<T>> crop(const MatrixPair<T>&, const CropRect<T>&);               \
     template Result<MatrixPair<T>> uncrop(const MatrixPair<T>&, const CropRect<T>&);             \
-    template Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>&, int, int, int, int);
+    template Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>&, int, int, int, int);         \
+    template Status crop_tiles(const MatrixPair<T>&, int, int, int, int, TileGrid<T>&);                \
+    template class TileGrid<T>;
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)
 

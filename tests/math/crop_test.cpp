@@ -187,4 +187,81 @@ TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
     }
 }
 
+TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rectangle, bit for bit", T, float,
+                   double) {
+    // One grid reused across sizes that grow and shrink (its storage is
+    // kept), cameras in every depth range, half of them reflected (the
+    // winding flag rides along), grids from 1 x 1 up to 40 x 33.
+    Random rng(94);
+    frustum::TileGrid<T> grid;
+    for (int i = 0; i < 120; ++i) {
+        const CameraSpec c = random_camera(rng);
+        MatrixPair<T> pair = make<T>(c);
+        if (rng.coin()) {
+            const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
+            REQUIRE(r.ok());
+            pair = *r;
+        }
+        const int w = 40 + rng.index(1900), h = 33 + rng.index(1050);
+        const int cols = 1 + rng.index(40), rows = 1 + rng.index(33);
+        CAPTURE(w);
+        CAPTURE(h);
+        CAPTURE(cols);
+        CAPTURE(rows);
+        const frustum::Status status = frustum::crop_tiles(pair, w, h, cols, rows, grid);
+        REQUIRE_MESSAGE(status.ok(), status.error());
+        REQUIRE(grid.columns() == cols);
+        REQUIRE(grid.rows() == rows);
+        REQUIRE(grid.size() == static_cast<std::size_t>(cols * rows));
+        REQUIRE(grid.matrices().size() == grid.size());
+        REQUIRE(grid.inverses().size() == grid.size());
+        const auto tiles = frustum::crop_tiles(pair, w, h, cols, rows);
+        REQUIRE(tiles.ok());
+        REQUIRE(tiles->size() == grid.size());
+        for (int r = 0; r < rows; ++r) {
+            for (int col = 0; col < cols; ++col) {
+                const std::size_t k = grid.index(col, r);
+                const auto same = frustum::crop(pair, CropRect<T>{T(grid.x_px(col)), T(grid.y_px(r)),
+                                                                  T(grid.width_px(col)), T(grid.height_px(r)),
+                                                                  T(w), T(h)});
+                REQUIRE(same.ok());
+                // Exact equality: the same IEEE operations in the same order.
+                CHECK(grid.matrices()[k] == same->matrix());
+                CHECK(grid.inverses()[k] == same->inverse());
+                const MatrixPair<T> p = grid.pair(k);
+                CHECK(p.matrix() == same->matrix());
+                CHECK(p.inverse() == same->inverse());
+                CHECK(p.depth() == pair.depth());
+                CHECK(p.flips_winding() == pair.flips_winding());
+                // The vector form is the grid's tiles.
+                const frustum::Tile<T>& t = (*tiles)[k];
+                const frustum::Tile<T> g = grid.tile(k);
+                CHECK(t.column == col);
+                CHECK(t.row == r);
+                CHECK(g.column == col);
+                CHECK(g.row == r);
+                CHECK(t.x_px == grid.x_px(col));
+                CHECK(t.y_px == grid.y_px(r));
+                CHECK(t.width_px == grid.width_px(col));
+                CHECK(t.height_px == grid.height_px(r));
+                CHECK(t.pair.matrix() == same->matrix());
+                CHECK(t.pair.inverse() == same->inverse());
+                CHECK(t.pair.flips_winding() == pair.flips_winding());
+            }
+        }
+        CHECK(grid.x_px(0) == 0);
+        CHECK(grid.x_px(cols) == w);
+        CHECK(grid.y_px(0) == 0);
+        CHECK(grid.y_px(rows) == h);
+    }
+    // A refusal: the same text as the vector form, and nothing left in the grid.
+    const MatrixPair<T> pair = make<T>(random_camera(rng));
+    const frustum::Status bad = frustum::crop_tiles(pair, 4, 600, 5, 2, grid);
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error() == frustum::crop_tiles(pair, 4, 600, 5, 2).error());
+    CHECK(grid.size() == 0);
+    CHECK(grid.columns() == 0);
+    CHECK(grid.matrices().empty());
+}
+
 } // TEST_SUITE

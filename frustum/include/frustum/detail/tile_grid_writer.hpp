@@ -1,0 +1,87 @@
+// How the library fills a TileGrid (crop_tiles, lens_tiles): the layout
+// (edges at floor(i W / n)), sized arrays to write the tiles' columns into,
+// and the vector-of-Tile form the older API returns.
+#pragma once
+
+#include "frustum/crop.hpp"
+#include "frustum/detail/simd4.hpp"
+
+#include <cstring>
+
+namespace frustum::detail {
+
+// Pixel edge i of `count` tiles across `size` pixels.
+inline int tile_edge(int i, int size, int count) {
+    return static_cast<int>(static_cast<long long>(i) * size / count);
+}
+
+struct TileGridWriter {
+    // The grid's layout and traits; matrices and inverses sized (contents
+    // left to the caller, who writes every tile).
+    template <class T>
+    static void layout(TileGrid<T>& grid, int width_px, int height_px, int columns, int rows, unsigned traits) {
+        grid.columns_ = columns;
+        grid.rows_ = rows;
+        grid.traits_ = traits;
+        grid.column_edges_px_.resize(static_cast<std::size_t>(columns) + 1);
+        grid.row_edges_px_.resize(static_cast<std::size_t>(rows) + 1);
+        for (int c = 0; c <= columns; ++c) {
+            grid.column_edges_px_[static_cast<std::size_t>(c)] = tile_edge(c, width_px, columns);
+        }
+        for (int r = 0; r <= rows; ++r) {
+            grid.row_edges_px_[static_cast<std::size_t>(r)] = tile_edge(r, height_px, rows);
+        }
+        const std::size_t tiles = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
+        grid.matrices_.resize(tiles);
+        grid.inverses_.resize(tiles);
+    }
+    // An empty grid (after an error: nothing half-written is left in it).
+    template <class T>
+    static void clear(TileGrid<T>& grid) {
+        grid.columns_ = grid.rows_ = 0;
+        grid.column_edges_px_.clear();
+        grid.row_edges_px_.clear();
+        grid.matrices_.clear();
+        grid.inverses_.clear();
+    }
+    template <class T>
+    static Mat4<T>* matrices(TileGrid<T>& grid) {
+        return grid.matrices_.data();
+    }
+    template <class T>
+    static Mat4<T>* inverses(TileGrid<T>& grid) {
+        return grid.inverses_.data();
+    }
+    // `count` vectors of working storage kept with the grid.
+    template <class T>
+    static Vec4<T>* scratch(TileGrid<T>& grid, std::size_t count) {
+        grid.scratch_.resize(count);
+        return grid.scratch_.data();
+    }
+    template <class T>
+    static void set_traits(TileGrid<T>& grid, unsigned traits) {
+        grid.traits_ = traits;
+    }
+};
+
+// A matrix written as four whole columns.
+template <class T>
+inline void store_columns(Mat4<T>& out, const V4<T>& c0, const V4<T>& c1, const V4<T>& c2, const V4<T>& c3) {
+    std::memcpy(&out[0], &c0, sizeof c0);
+    std::memcpy(&out[1], &c1, sizeof c1);
+    std::memcpy(&out[2], &c2, sizeof c2);
+    std::memcpy(&out[3], &c3, sizeof c3);
+}
+
+// Every tile of the grid, in index order.
+template <class T>
+std::vector<Tile<T>> tiles_of(const TileGrid<T>& grid) {
+    std::vector<Tile<T>> tiles;
+    tiles.reserve(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        tiles.push_back(grid.tile(i));
+    }
+    return tiles;
+}
+
+} // namespace frustum::detail
