@@ -5,6 +5,8 @@
 #include "frustum/detail/tile_grid_writer.hpp"
 
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 
 namespace frustum {
 
@@ -44,72 +46,136 @@ Tile<T> TileGrid<T>::tile(std::size_t i) const {
     return Tile<T>{column, row, x_px(column), y_px(row), width_px(column), height_px(row), pair(i)};
 }
 
+namespace {
+
 // Batched (issue 14). The crop map of a tile is the x map of its column and
 // the y map of its row, so each is computed once per column and once per
 // row of tiles, with the expressions of detail::scale_offset_xy in its
 // order: every tile gets the bits crop() gives it. A column of tiles holds
 // rows 0, 2 and 3 of every column of M' (row 1 still open), column 0 of the
-// inverse and the first term of column 3; a row of tiles holds row 1 of M',
-// column 1 of the inverse and the second term of column 3. Per tile: four
-// lane inserts, one subtraction and eight whole-column stores.
+// inverse and the first term of column 3 (kColumnParts vectors); a row of
+// tiles holds row 1 of M', column 1 of the inverse and the second term of
+// column 3. Per tile: four lane inserts, one subtraction, eight column stores.
+constexpr std::size_t kColumnParts = 6;
+
+template <class T>
+void column_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int x0, int x1, int width_px,
+                  Vec4<T>* part) {
+    using detail::V4;
+    const CropMap<T> map = crop_map(CropRect<T>{T(x0), T(0), T(x1 - x0), T(1), T(width_px), T(1)});
+    const T inv_sx = T(1) / map.sx;
+    // scale_offset_xy's column with sy = 1, ty = 0: rows 2 and 3 are
+    // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0, as crop() forms them.
+    const V4<T> scale{map.sx, T(0), T(1), T(1)};
+    const V4<T> offset{map.tx, T(0), T(0), T(0)};
+    for (int j = 0; j < 4; ++j) {
+        part[j] = detail::store<T>(m.c[j] * scale + detail::lane<3>(m.c[j]) * offset);
+    }
+    part[4] = detail::store<T>(inv.c[0] * inv_sx);
+    part[5] = detail::store<T>(inv.c[3] - (map.tx * inv_sx) * inv.c[0]);
+}
+
+template <class T>
+struct RowParts {
+    T row1[4]; // entry j: row 1 of column j of M'
+    Vec4<T> inv1, inv3_term;
+};
+template <class T>
+RowParts<T> row_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int y0, int y1, int height_px) {
+    const CropMap<T> map = crop_map(CropRect<T>{T(0), T(y0), T(1), T(y1 - y0), T(1), T(height_px)});
+    const T inv_sy = T(1) / map.sy;
+    RowParts<T> out;
+    for (int j = 0; j < 4; ++j) {
+        out.row1[j] = m.c[j][1] * map.sy + m.c[j][3] * map.ty;
+    }
+    out.inv1 = detail::store<T>(inv.c[1] * inv_sy);
+    out.inv3_term = detail::store<T>((map.ty * inv_sy) * inv.c[1]);
+    return out;
+}
+
+// out = column with entry 1 replaced by row1 (no arithmetic, so the bits
+// stay), written as whole 16-byte stores: a lane insert in float; in double
+// only the low half changes and the high half is copied (a four-wide double
+// vector, two halves in a struct, went through the stack here).
+template <class T>
+FRUSTUM_HOT_INLINE void with_row1(Vec4<T>& out, const Vec4<T>& column, T row1) {
+    if constexpr (std::is_same_v<T, float>) {
+        const detail::V4<float> v = detail::with_lane<1>(detail::load(column), row1);
+        std::memcpy(&out, &v, sizeof v);
+    } else {
+        detail::Double2 low;
+        std::memcpy(&low, &column[0], sizeof low);
+        low[1] = row1;
+        std::memcpy(&out[0], &low, sizeof low);
+        std::memcpy(&out[2], &column[2], sizeof low);
+    }
+}
+
+// The vector form's Tile (c, r), built by its conversion straight in the
+// vector's storage (emplace_back; C++17 guaranteed elision).
+template <class T>
+struct CropTileMaker {
+    int c, r, x0, y0, width, height;
+    const Vec4<T>* part;
+    const RowParts<T>& row;
+    const Vec4<T>& inv2;
+    unsigned traits;
+    FRUSTUM_HOT_INLINE operator Tile<T>() const { // NOLINT: implicit by design (emplace_back)
+        Vec4<T> m[4];
+        for (int j = 0; j < 4; ++j) {
+            with_row1<T>(m[j], part[j], row.row1[j]);
+        }
+        return Tile<T>{c, r, x0, y0, width, height,
+                       detail::PairFactory::keep_sign_columns<T>(m[0], m[1], m[2], m[3], part[4], row.inv1, inv2,
+                                                                 part[5] - row.inv3_term, traits)};
+    }
+};
+
+template <class T>
+Status tiles_refused(int width_px, int height_px, int columns, int rows) {
+    return detail::error<T>("crop_tiles", "need 1 <= columns <= width_px and 1 <= rows <= height_px",
+                            {{"width_px", T(width_px)}, {"height_px", T(height_px)},
+                             {"columns", T(columns)}, {"rows", T(rows)}});
+}
+bool tiles_fit(int width_px, int height_px, int columns, int rows) {
+    return width_px >= 1 && height_px >= 1 && columns >= 1 && rows >= 1 && columns <= width_px && rows <= height_px;
+}
+
+} // namespace
+
 template <class T>
 Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns, int rows,
                   TileGrid<T>& out) {
     using detail::TileGridWriter;
-    using detail::V4;
-    if (width_px < 1 || height_px < 1 || columns < 1 || rows < 1 || columns > width_px || rows > height_px) {
+    if (!tiles_fit(width_px, height_px, columns, rows)) {
         TileGridWriter::clear(out);
-        return detail::error<T>("crop_tiles", "need 1 <= columns <= width_px and 1 <= rows <= height_px",
-                                {{"width_px", T(width_px)}, {"height_px", T(height_px)},
-                                 {"columns", T(columns)}, {"rows", T(rows)}});
+        return tiles_refused<T>(width_px, height_px, columns, rows);
     }
     TileGridWriter::layout(out, width_px, height_px, columns, rows, detail::PairFactory::traits(pair));
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-
-    // Per column of tiles, six vectors: columns 0-3 of M' with row 1 open,
-    // inverse column 0, and inverse column 3 less its row term.
-    constexpr std::size_t kParts = 6;
-    Vec4<T>* parts = TileGridWriter::scratch(out, kParts * static_cast<std::size_t>(columns));
+    Vec4<T>* parts = TileGridWriter::scratch(out, kColumnParts * static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c) {
-        const int x0 = out.x_px(c), x1 = out.x_px(c + 1);
-        const CropMap<T> map = crop_map(CropRect<T>{T(x0), T(0), T(x1 - x0), T(1), T(width_px), T(1)});
-        const T inv_sx = T(1) / map.sx;
-        // scale_offset_xy's column with sy = 1, ty = 0: rows 2 and 3 are
-        // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0, as crop() forms them.
-        const V4<T> scale{map.sx, T(0), T(1), T(1)};
-        const V4<T> offset{map.tx, T(0), T(0), T(0)};
-        Vec4<T>* part = parts + kParts * static_cast<std::size_t>(c);
-        for (int j = 0; j < 4; ++j) {
-            part[j] = detail::store<T>(m.c[j] * scale + detail::lane<3>(m.c[j]) * offset);
-        }
-        part[4] = detail::store<T>(inv.c[0] * inv_sx);
-        part[5] = detail::store<T>(inv.c[3] - (map.tx * inv_sx) * inv.c[0]);
+        column_parts(m, inv, out.x_px(c), out.x_px(c + 1), width_px, parts + kColumnParts * static_cast<std::size_t>(c));
     }
-    const V4<T> inv2 = inv.c[2];
+    const Vec4<T> inv2 = pair.inverse()[2];
     Mat4<T>* matrices = TileGridWriter::matrices(out);
     Mat4<T>* inverses = TileGridWriter::inverses(out);
     for (int r = 0; r < rows; ++r) {
-        const int y0 = out.y_px(r), y1 = out.y_px(r + 1);
-        const CropMap<T> map = crop_map(CropRect<T>{T(0), T(y0), T(1), T(y1 - y0), T(1), T(height_px)});
-        const T inv_sy = T(1) / map.sy;
-        const T row1_0 = m.c[0][1] * map.sy + m.c[0][3] * map.ty;
-        const T row1_1 = m.c[1][1] * map.sy + m.c[1][3] * map.ty;
-        const T row1_2 = m.c[2][1] * map.sy + m.c[2][3] * map.ty;
-        const T row1_3 = m.c[3][1] * map.sy + m.c[3][3] * map.ty;
-        const V4<T> inv1 = inv.c[1] * inv_sy;
-        const V4<T> inv3_term = (map.ty * inv_sy) * inv.c[1];
+        const RowParts<T> row = row_parts(m, inv, out.y_px(r), out.y_px(r + 1), height_px);
         const std::size_t first = out.index(0, r);
         for (int c = 0; c < columns; ++c) {
-            const Vec4<T>* part = parts + kParts * static_cast<std::size_t>(c);
-            const std::size_t i = first + static_cast<std::size_t>(c);
-            // Entry 1 of each column replaced (no arithmetic, so the bits stay).
-            detail::store_columns<T>(matrices[i], detail::with_lane<1>(detail::load(part[0]), row1_0),
-                                     detail::with_lane<1>(detail::load(part[1]), row1_1),
-                                     detail::with_lane<1>(detail::load(part[2]), row1_2),
-                                     detail::with_lane<1>(detail::load(part[3]), row1_3));
-            detail::store_columns<T>(inverses[i], detail::load(part[4]), inv1, inv2,
-                                     detail::load(part[5]) - inv3_term);
+            const Vec4<T>* part = parts + kColumnParts * static_cast<std::size_t>(c);
+            Mat4<T>& mo = matrices[first + static_cast<std::size_t>(c)];
+            Mat4<T>& io = inverses[first + static_cast<std::size_t>(c)];
+            with_row1<T>(mo[0], part[0], row.row1[0]);
+            with_row1<T>(mo[1], part[1], row.row1[1]);
+            with_row1<T>(mo[2], part[2], row.row1[2]);
+            with_row1<T>(mo[3], part[3], row.row1[3]);
+            io[0] = part[4];
+            io[1] = row.inv1;
+            io[2] = inv2;
+            io[3] = part[5] - row.inv3_term;
         }
     }
     return {};
@@ -118,11 +184,32 @@ Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int co
 template <class T>
 Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns,
                                         int rows) {
-    TileGrid<T> grid;
-    if (Status status = crop_tiles(pair, width_px, height_px, columns, rows, grid); !status) {
-        return status.take_error();
+    using detail::tile_edge;
+    if (!tiles_fit(width_px, height_px, columns, rows)) {
+        return tiles_refused<T>(width_px, height_px, columns, rows).take_error();
     }
-    return detail::tiles_of(grid);
+    const detail::Cols<T> m = detail::load(pair.matrix());
+    const detail::Cols<T> inv = detail::load(pair.inverse());
+    std::vector<Vec4<T>> parts(kColumnParts * static_cast<std::size_t>(columns));
+    for (int c = 0; c < columns; ++c) {
+        column_parts(m, inv, tile_edge(c, width_px, columns), tile_edge(c + 1, width_px, columns), width_px,
+                     &parts[kColumnParts * static_cast<std::size_t>(c)]);
+    }
+    const Vec4<T> inv2 = pair.inverse()[2];
+    const unsigned traits = detail::PairFactory::traits(pair);
+    std::vector<Tile<T>> tiles;
+    tiles.reserve(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r) {
+        const int y0 = tile_edge(r, height_px, rows), y1 = tile_edge(r + 1, height_px, rows);
+        const RowParts<T> row = row_parts(m, inv, y0, y1, height_px);
+        for (int c = 0; c < columns; ++c) {
+            const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
+            tiles.emplace_back(CropTileMaker<T>{c, r, x0, y0, x1 - x0, y1 - y0,
+                                                &parts[kColumnParts * static_cast<std::size_t>(c)], row, inv2,
+                                                traits});
+        }
+    }
+    return tiles;
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                                   \

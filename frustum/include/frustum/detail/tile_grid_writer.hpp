@@ -1,12 +1,9 @@
 // How the library fills a TileGrid (crop_tiles, lens_tiles): the layout
-// (edges at floor(i W / n)), sized arrays to write the tiles' columns into,
+// (edges at floor(i W / n)), sized arrays to write the tiles into,
 // and the vector-of-Tile form the older API returns.
 #pragma once
 
 #include "frustum/crop.hpp"
-#include "frustum/detail/simd4.hpp"
-
-#include <cstring>
 
 namespace frustum::detail {
 
@@ -64,14 +61,15 @@ struct TileGridWriter {
     }
 };
 
-// A matrix written as four whole columns.
+// Tile i of a grid, converted where it is needed: emplace_back of one
+// builds the Tile straight in a vector's storage (C++17 guaranteed elision,
+// no temporary Tile copied in).
 template <class T>
-inline void store_columns(Mat4<T>& out, const V4<T>& c0, const V4<T>& c1, const V4<T>& c2, const V4<T>& c3) {
-    std::memcpy(&out[0], &c0, sizeof c0);
-    std::memcpy(&out[1], &c1, sizeof c1);
-    std::memcpy(&out[2], &c2, sizeof c2);
-    std::memcpy(&out[3], &c3, sizeof c3);
-}
+struct TileOf {
+    const TileGrid<T>& grid;
+    std::size_t i;
+    operator Tile<T>() const { return grid.tile(i); } // NOLINT: implicit by design (emplace_back)
+};
 
 // Every tile of the grid, in index order.
 template <class T>
@@ -79,7 +77,7 @@ std::vector<Tile<T>> tiles_of(const TileGrid<T>& grid) {
     std::vector<Tile<T>> tiles;
     tiles.reserve(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
-        tiles.push_back(grid.tile(i));
+        tiles.emplace_back(TileOf<T>{grid, i});
     }
     return tiles;
 }
