@@ -54,8 +54,9 @@ namespace {
 // order: every tile gets the bits crop() gives it. A column of tiles holds
 // rows 0, 2 and 3 of every column of M' (row 1 still open), column 0 of the
 // inverse and the first term of column 3 (kColumnParts vectors); a row of
-// tiles holds row 1 of M', column 1 of the inverse and the second term of
-// column 3. Per tile: four lane inserts, one subtraction, eight column stores.
+// tiles holds row 1 of M', column 1 of the inverse and the factor of the
+// second term of column 3. Per tile: four lane inserts, one multiply and
+// one subtraction, eight column stores.
 constexpr std::size_t kColumnParts = 6;
 
 template <class T>
@@ -78,7 +79,8 @@ void column_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int x0, 
 template <class T>
 struct RowParts {
     T row1[4]; // entry j: row 1 of column j of M'
-    Vec4<T> inv1, inv3_term;
+    Vec4<T> inv1;
+    T shift; // ty / sy: inverse column 3 is (column part) - shift inv_1
 };
 template <class T>
 RowParts<T> row_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int y0, int y1, int height_px) {
@@ -89,8 +91,17 @@ RowParts<T> row_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int 
         out.row1[j] = m.c[j][1] * map.sy + m.c[j][3] * map.ty;
     }
     out.inv1 = detail::store<T>(inv.c[1] * inv_sy);
-    out.inv3_term = detail::store<T>((map.ty * inv_sy) * inv.c[1]);
+    out.shift = map.ty * inv_sy;
     return out;
+}
+
+// Inverse column 3 of a tile: its column's part less the row's term, the
+// product formed here as crop() forms it (inv3 - a inv0 - b inv1), so a
+// compiler that fuses multiply-adds (aarch64) fuses both alike.
+template <class T>
+FRUSTUM_HOT_INLINE void inverse_column3(Vec4<T>& out, const Vec4<T>& part, T shift, const detail::V4<T>& inv1) {
+    const detail::V4<T> column = detail::load(part) - shift * inv1;
+    std::memcpy(&out, &column, sizeof column);
 }
 
 // out = column with entry 1 replaced by row1 (no arithmetic, so the bits
@@ -119,15 +130,17 @@ struct CropTileMaker {
     const Vec4<T>* part;
     const RowParts<T>& row;
     const Vec4<T>& inv2;
+    const detail::V4<T>& inv1; // the camera's inverse column 1
     unsigned traits;
     FRUSTUM_HOT_INLINE operator Tile<T>() const { // NOLINT: implicit by design (emplace_back)
-        Vec4<T> m[4];
+        Vec4<T> m[4], inv3;
         for (int j = 0; j < 4; ++j) {
             with_row1<T>(m[j], part[j], row.row1[j]);
         }
+        inverse_column3<T>(inv3, part[5], row.shift, inv1);
         return Tile<T>{c, r, x0, y0, width, height,
                        detail::PairFactory::keep_sign_columns<T>(m[0], m[1], m[2], m[3], part[4], row.inv1, inv2,
-                                                                 part[5] - row.inv3_term, traits)};
+                                                                 inv3, traits)};
     }
 };
 
@@ -175,7 +188,7 @@ Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int co
             io[0] = part[4];
             io[1] = row.inv1;
             io[2] = inv2;
-            io[3] = part[5] - row.inv3_term;
+            inverse_column3<T>(io[3], part[5], row.shift, inv.c[1]);
         }
     }
     return {};
@@ -206,7 +219,7 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
             const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
             tiles.emplace_back(CropTileMaker<T>{c, r, x0, y0, x1 - x0, y1 - y0,
                                                 &parts[kColumnParts * static_cast<std::size_t>(c)], row, inv2,
-                                                traits});
+                                                inv.c[1], traits});
         }
     }
     return tiles;

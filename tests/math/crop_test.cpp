@@ -187,6 +187,33 @@ TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
     }
 }
 
+// Bit for bit where the compiler does not fuse multiply-adds (x86-64,
+// armhf, wasm, aarch64 with -ffp-contract=off). Where it may (__FP_FAST_FMA:
+// aarch64 with GCC's default contraction), the grid's loop can hoist the
+// row's product b inv_1 out of the tile loop and round it before the
+// subtraction crop() fuses, so inverse column 3 may move by an ulp of its
+// largest entry (docs/porting.md, per-variant drift).
+template <class T>
+bool same_tile_inverse(const frustum::Mat4<T>& batch, const frustum::Mat4<T>& single) {
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    if (batch[0] != single[0] || batch[1] != single[1] || batch[2] != single[2]) {
+        return false;
+    }
+    T largest = 0;
+    for (int i = 0; i < 4; ++i) {
+        largest = std::max(largest, std::abs(single[3][i]));
+    }
+    for (int i = 0; i < 4; ++i) {
+        if (!(std::abs(batch[3][i] - single[3][i]) <= 2 * std::numeric_limits<T>::epsilon() * largest)) {
+            return false;
+        }
+    }
+    return true;
+#else
+    return batch == single;
+#endif
+}
+
 TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rectangle, bit for bit", T, float,
                    double) {
     // One grid reused across sizes that grow and shrink (its storage is
@@ -227,10 +254,10 @@ TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rect
                 REQUIRE(same.ok());
                 // Exact equality: the same IEEE operations in the same order.
                 CHECK(grid.matrices()[k] == same->matrix());
-                CHECK(grid.inverses()[k] == same->inverse());
+                CHECK(same_tile_inverse(grid.inverses()[k], same->inverse()));
                 const MatrixPair<T> p = grid.pair(k);
                 CHECK(p.matrix() == same->matrix());
-                CHECK(p.inverse() == same->inverse());
+                CHECK(p.inverse() == grid.inverses()[k]);
                 CHECK(p.depth() == pair.depth());
                 CHECK(p.flips_winding() == pair.flips_winding());
                 // The vector form is the grid's tiles.
@@ -245,7 +272,7 @@ TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rect
                 CHECK(t.width_px == grid.width_px(col));
                 CHECK(t.height_px == grid.height_px(r));
                 CHECK(t.pair.matrix() == same->matrix());
-                CHECK(t.pair.inverse() == same->inverse());
+                CHECK(same_tile_inverse(t.pair.inverse(), same->inverse()));
                 CHECK(t.pair.flips_winding() == pair.flips_winding());
             }
         }
