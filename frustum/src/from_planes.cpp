@@ -197,34 +197,50 @@ Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector
     return detail::from_planes_points(planes, far_points.data(), far_points.size(), depth);
 }
 
+namespace {
+
+// §4.1's side rows and K_n for the far points (the checks of both, in order).
+template <class T>
+struct RowsAndK {
+    SideRows<T> rows;
+    T k_near;
+};
+template <class T>
+Result<RowsAndK<T>> rows_through(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
+                                 DepthRange depth) {
+    auto rows = side_rows(planes, "from_planes");
+    if (!rows) {
+        return rows.take_error();
+    }
+    const auto k_near = k_near_through_all(*rows, far_points, count, depth);
+    if (!k_near) {
+        return k_near.take_error();
+    }
+    return RowsAndK<T>{*rows, *k_near};
+}
+
+} // namespace
+
 namespace detail {
 
 template <class T>
 Result<MatrixPair<T>> from_planes_points(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
                                          DepthRange depth) {
-    const auto rows = side_rows(planes, "from_planes");
-    if (!rows) {
-        return rows.take_error();
+    const auto found = rows_through(planes, far_points, count, depth);
+    if (!found) {
+        return found.take_error();
     }
-    const auto k_near = k_near_through_all(*rows, far_points, count, depth);
-    if (!k_near) {
-        return k_near.take_error();
-    }
-    return assemble(*rows, *k_near, depth, "from_planes");
+    return assemble(found->rows, found->k_near, depth, "from_planes");
 }
 
 template <class T>
 Result<Mat4<T>> from_planes_matrix(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
                                    DepthRange depth) {
-    const auto rows = side_rows(planes, "from_planes");
-    if (!rows) {
-        return rows.take_error();
+    const auto found = rows_through(planes, far_points, count, depth);
+    if (!found) {
+        return found.take_error();
     }
-    const auto k_near = k_near_through_all(*rows, far_points, count, depth);
-    if (!k_near) {
-        return k_near.take_error();
-    }
-    return matrix_of(*rows, *k_near, depth);
+    return matrix_of(found->rows, found->k_near, depth);
 }
 
 } // namespace detail

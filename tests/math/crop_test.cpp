@@ -29,6 +29,18 @@ CropRect<double> random_rect(Random& rng) {
     return {rng.uniform(0, fw - w), rng.uniform(0, fh - h), w, h, fw, fh};
 }
 
+// A random camera, reflected half of the time (the winding flag rides along).
+template <class T>
+MatrixPair<T> maybe_reflected(Random& rng) {
+    const MatrixPair<T> pair = make<T>(random_camera(rng));
+    if (!rng.coin()) {
+        return pair;
+    }
+    const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
+    REQUIRE(r.ok());
+    return *r;
+}
+
 template <class T>
 CropRect<T> as(const CropRect<double>& r) {
     return {T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
@@ -97,20 +109,14 @@ TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of t
 TEST_CASE_TEMPLATE("crop then uncrop returns the original; flags and depth carried", T, float, double) {
     Random rng(92);
     for (int i = 0; i < 1000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        MatrixPair<T> pair = make<T>(c);
-        if (rng.coin()) {
-            const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
-            REQUIRE(r.ok());
-            pair = *r;
-        }
+        const MatrixPair<T> pair = maybe_reflected<T>(rng);
         const CropRect<T> rect = as<T>(random_rect(rng));
         const auto cropped = frustum::crop(pair, rect);
         REQUIRE_MESSAGE(cropped.ok(), cropped.error());
         const auto back = frustum::uncrop(*cropped, rect);
         REQUIRE(back.ok());
         CHECK(back->flips_winding() == pair.flips_winding());
-        CHECK(back->depth() == c.depth);
+        CHECK(back->depth() == pair.depth());
         // Scales up to 20 (a 5% crop) and back: a few ulp times 20.
         CHECK(column_relative_diff(back->matrix(), pair.matrix()) <= loose<T>());
         CHECK(column_relative_diff(back->inverse(), pair.inverse()) <= loose<T>());
@@ -222,13 +228,7 @@ TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rect
     Random rng(94);
     frustum::TileGrid<T> grid;
     for (int i = 0; i < 120; ++i) {
-        const CameraSpec c = random_camera(rng);
-        MatrixPair<T> pair = make<T>(c);
-        if (rng.coin()) {
-            const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
-            REQUIRE(r.ok());
-            pair = *r;
-        }
+        const MatrixPair<T> pair = maybe_reflected<T>(rng);
         const int w = 40 + rng.index(1900), h = 33 + rng.index(1050);
         const int cols = 1 + rng.index(40), rows = 1 + rng.index(33);
         CAPTURE(w);
