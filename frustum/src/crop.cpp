@@ -69,8 +69,8 @@ void column_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int x0, 
     // M_j.z * 1 + M_j.w * 0 and M_j.w * 1 + M_j.w * 0, as crop() forms them.
     const V4<T> scale{map.sx, T(0), T(1), T(1)};
     const V4<T> offset{map.tx, T(0), T(0), T(0)};
-    for (int j = 0; j < 4; ++j) {
-        part[j] = detail::store<T>(m.c[j] * scale + detail::lane<3>(m.c[j]) * offset);
+    for (int j = 0; j < 4; ++j) { // entry 1 cleared to +0 (all bits zero) for with_row1
+        part[j] = detail::store<T>(detail::with_lane<1>(m.c[j] * scale + detail::lane<3>(m.c[j]) * offset, T(0)));
     }
     part[4] = detail::store<T>(inv.c[0] * inv_sx);
     part[5] = detail::store<T>(inv.c[3] - (map.tx * inv_sx) * inv.c[0]);
@@ -78,7 +78,7 @@ void column_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int x0, 
 
 template <class T>
 struct RowParts {
-    T row1[4]; // entry j: row 1 of column j of M'
+    Vec4<T> row1[4]; // (0, row 1 of column j of M', 0, 0)
     Vec4<T> inv1;
     T shift; // ty / sy: inverse column 3 is (column part) - shift inv_1
 };
@@ -88,7 +88,7 @@ RowParts<T> row_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int 
     const T inv_sy = T(1) / map.sy;
     RowParts<T> out;
     for (int j = 0; j < 4; ++j) {
-        out.row1[j] = m.c[j][1] * map.sy + m.c[j][3] * map.ty;
+        out.row1[j] = Vec4<T>(T(0), m.c[j][1] * map.sy + m.c[j][3] * map.ty, T(0), T(0));
     }
     out.inv1 = detail::store<T>(inv.c[1] * inv_sy);
     out.shift = map.ty * inv_sy;
@@ -99,27 +99,27 @@ RowParts<T> row_parts(const detail::Cols<T>& m, const detail::Cols<T>& inv, int 
 // product formed here as crop() forms it (inv3 - a inv0 - b inv1), so a
 // compiler that fuses multiply-adds (aarch64) fuses both alike.
 template <class T>
-FRUSTUM_HOT_INLINE void inverse_column3(Vec4<T>& out, const Vec4<T>& part, T shift, const detail::V4<T>& inv1) {
-    const detail::V4<T> column = detail::load(part) - shift * inv1;
-    std::memcpy(&out, &column, sizeof column);
+FRUSTUM_HOT_INLINE Vec4<T> inverse_column3(const Vec4<T>& part, T shift, const detail::V4<T>& inv1) {
+    return detail::store<T>(detail::load(part) - shift * inv1);
 }
 
-// out = column with entry 1 replaced by row1 (no arithmetic, so the bits
-// stay), written as whole 16-byte stores: a lane insert in float; in double
-// only the low half changes and the high half is copied (a four-wide double
-// vector, two halves in a struct, went through the stack here).
+// A column part (entry 1 all bits zero) with entry 1 put in from the row's
+// (0, row1, 0, 0): a bitwise OR, so every entry keeps its bits (signed
+// zeros too) at one instruction, where a lane insert takes three shuffles
+// on x86-64's SSE2. In double only the low half changes.
 template <class T>
-FRUSTUM_HOT_INLINE void with_row1(Vec4<T>& out, const Vec4<T>& column, T row1) {
-    if constexpr (std::is_same_v<T, float>) {
-        const detail::V4<float> v = detail::with_lane<1>(detail::load(column), row1);
-        std::memcpy(&out, &v, sizeof v);
-    } else {
-        detail::Double2 low;
-        std::memcpy(&low, &column[0], sizeof low);
-        low[1] = row1;
-        std::memcpy(&out[0], &low, sizeof low);
-        std::memcpy(&out[2], &column[2], sizeof low);
+FRUSTUM_HOT_INLINE Vec4<T> with_row1(const Vec4<T>& column, const Vec4<T>& row1) {
+    typedef unsigned long long Bits __attribute__((vector_size(16)));
+    Bits a, b;
+    std::memcpy(&a, &column, sizeof a);
+    std::memcpy(&b, &row1, sizeof b);
+    a |= b;
+    Vec4<T> out;
+    std::memcpy(&out, &a, sizeof a);
+    if constexpr (sizeof(Vec4<T>) > sizeof(Bits)) {
+        std::memcpy(&out[2], &column[2], sizeof a);
     }
+    return out;
 }
 
 // The vector form's Tile (c, r), built by its conversion straight in the
@@ -133,14 +133,11 @@ struct CropTileMaker {
     const detail::V4<T>& inv1; // the camera's inverse column 1
     unsigned traits;
     FRUSTUM_HOT_INLINE operator Tile<T>() const { // NOLINT: implicit by design (emplace_back)
-        Vec4<T> m[4], inv3;
-        for (int j = 0; j < 4; ++j) {
-            with_row1<T>(m[j], part[j], row.row1[j]);
-        }
-        inverse_column3<T>(inv3, part[5], row.shift, inv1);
         return Tile<T>{c, r, x0, y0, width, height,
-                       detail::PairFactory::keep_sign_columns<T>(m[0], m[1], m[2], m[3], part[4], row.inv1, inv2,
-                                                                 inv3, traits)};
+                       detail::PairFactory::keep_sign_columns<T>(
+                           with_row1<T>(part[0], row.row1[0]), with_row1<T>(part[1], row.row1[1]),
+                           with_row1<T>(part[2], row.row1[2]), with_row1<T>(part[3], row.row1[3]), part[4],
+                           row.inv1, inv2, inverse_column3<T>(part[5], row.shift, inv1), traits)};
     }
 };
 
@@ -181,14 +178,14 @@ Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int co
             const Vec4<T>* part = parts + kColumnParts * static_cast<std::size_t>(c);
             Mat4<T>& mo = matrices[first + static_cast<std::size_t>(c)];
             Mat4<T>& io = inverses[first + static_cast<std::size_t>(c)];
-            with_row1<T>(mo[0], part[0], row.row1[0]);
-            with_row1<T>(mo[1], part[1], row.row1[1]);
-            with_row1<T>(mo[2], part[2], row.row1[2]);
-            with_row1<T>(mo[3], part[3], row.row1[3]);
+            mo[0] = with_row1<T>(part[0], row.row1[0]);
+            mo[1] = with_row1<T>(part[1], row.row1[1]);
+            mo[2] = with_row1<T>(part[2], row.row1[2]);
+            mo[3] = with_row1<T>(part[3], row.row1[3]);
             io[0] = part[4];
             io[1] = row.inv1;
             io[2] = inv2;
-            inverse_column3<T>(io[3], part[5], row.shift, inv.c[1]);
+            io[3] = inverse_column3<T>(part[5], row.shift, inv.c[1]);
         }
     }
     return {};
@@ -204,9 +201,13 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
     std::vector<Vec4<T>> parts(kColumnParts * static_cast<std::size_t>(columns));
+    std::vector<int> x_edges(static_cast<std::size_t>(columns) + 1); // one division each, not per tile
+    for (int c = 0; c <= columns; ++c) {
+        x_edges[static_cast<std::size_t>(c)] = tile_edge(c, width_px, columns);
+    }
     for (int c = 0; c < columns; ++c) {
-        column_parts(m, inv, tile_edge(c, width_px, columns), tile_edge(c + 1, width_px, columns), width_px,
-                     &parts[kColumnParts * static_cast<std::size_t>(c)]);
+        column_parts(m, inv, x_edges[static_cast<std::size_t>(c)], x_edges[static_cast<std::size_t>(c) + 1],
+                     width_px, &parts[kColumnParts * static_cast<std::size_t>(c)]);
     }
     const Vec4<T> inv2 = pair.inverse()[2];
     const unsigned traits = detail::PairFactory::traits(pair);
@@ -216,7 +217,7 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
         const int y0 = tile_edge(r, height_px, rows), y1 = tile_edge(r + 1, height_px, rows);
         const RowParts<T> row = row_parts(m, inv, y0, y1, height_px);
         for (int c = 0; c < columns; ++c) {
-            const int x0 = tile_edge(c, width_px, columns), x1 = tile_edge(c + 1, width_px, columns);
+            const int x0 = x_edges[static_cast<std::size_t>(c)], x1 = x_edges[static_cast<std::size_t>(c) + 1];
             tiles.emplace_back(CropTileMaker<T>{c, r, x0, y0, x1 - x0, y1 - y0,
                                                 &parts[kColumnParts * static_cast<std::size_t>(c)], row, inv2,
                                                 inv.c[1], traits});
