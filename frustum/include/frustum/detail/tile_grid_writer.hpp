@@ -5,11 +5,18 @@
 
 #include "frustum/crop.hpp"
 
+#include <limits>
+
 namespace frustum::detail {
 
-// Pixel edge i of `count` tiles across `size` pixels.
+// Pixel edge i of `count` tiles across `size` pixels: floor(i size / count),
+// in 32 bits when i size fits (a 64-bit division costs several times more).
 inline int tile_edge(int i, int size, int count) {
-    return static_cast<int>(static_cast<long long>(i) * size / count);
+    const long long product = static_cast<long long>(i) * size;
+    if (product <= std::numeric_limits<int>::max()) {
+        return static_cast<int>(product) / count;
+    }
+    return static_cast<int>(product / count);
 }
 
 struct TileGridWriter {
