@@ -55,7 +55,7 @@ namespace {
 // rows 0, 2 and 3 of every column of M' (row 1 still open), column 0 of the
 // inverse and the first term of column 3 (kColumnParts vectors); a row of
 // tiles holds row 1 of M', column 1 of the inverse and the factor of the
-// second term of column 3. Per tile: four lane inserts, one multiply and
+// second term of column 3. Per tile: four ORs (with_row1), one multiply and
 // one subtraction, eight column stores.
 constexpr std::size_t kColumnParts = 6;
 
