@@ -50,3 +50,29 @@ done
 echo "| glm::inverse alone | - | $(($(per_call glm_inverse) - loop)) |"
 echo
 echo "(instructions per call on the success path, $("$cxx" --version | head -1), $(qemu-aarch64 --version | head -1); loop overhead $loop subtracted)"
+
+# Batched updates (tests/bench/count_tiles_driver.cpp): one call on a G x G
+# grid of a 1280 x 720 image, counted as above with 1 and 3 calls, divided
+# by G * G: instructions per tile, the call's fixed part included.
+"$cxx" "${flags[@]}" -static "$root/tests/bench/count_tiles_driver.cpp" "${objects[@]}" -o "$out/count_tiles_driver"
+count_tiles() { # op G repeats -> executed instructions of the whole run
+  qemu-aarch64 -L "$sysroot" -singlestep -d exec,nochain -D /dev/stdout "$out/count_tiles_driver" "$1" "$2" "$3" |
+    grep -c '^Trace'
+}
+per_tile() { # op G -> instructions per tile of one call
+  local a b
+  a=$(count_tiles "$1" "$2" 1)
+  b=$(count_tiles "$1" "$2" 3)
+  echo $(((b - a) / 2 / ($2 * $2)))
+}
+echo
+echo "| batch, per tile | analytic (library) | tiles' matrices + glm::inverse |"
+echo "|---|---|---|"
+for g in 8 16 32; do
+  echo "| crop_tiles ${g} x ${g} | $(per_tile crop_tiles $g) | $(per_tile crop_tiles_glm $g) |"
+done
+for g in 4 16; do
+  echo "| lens_tiles ${g} x ${g} | $(per_tile lens_tiles $g) | $(per_tile lens_tiles_glm $g) |"
+done
+echo
+echo "(instructions per tile, float; the loop around the calls is under 1 per tile)"

@@ -3,6 +3,7 @@
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/tolerances.hpp"
 #include "frustum/detail/finite.hpp"
+#include "frustum/detail/from_planes_points.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/plane_intersection.hpp"
 #include "frustum/queries.hpp"
@@ -92,13 +93,19 @@ Result<SideRows<T>> side_rows(const SidePlanes<T>& input, const char* function) 
 }
 
 template <class T>
-Result<MatrixPair<T>> assemble(const SideRows<T>& rows, T k_near, DepthRange depth, const char* function) {
+Mat4<T> matrix_of(const SideRows<T>& rows, T k_near, DepthRange depth) {
     const T s = clip_z_span<T>(depth) > T(0) ? T(1) : T(-1);
     Mat4<T> m;
     set_row(m, 0, rows.m0);
     set_row(m, 1, rows.m1);
     set_row(m, 2, clip_z_near<T>(depth) * rows.m3 + s * k_near * rows.near.abcd);
     set_row(m, 3, rows.m3);
+    return m;
+}
+
+template <class T>
+Result<MatrixPair<T>> assemble(const SideRows<T>& rows, T k_near, DepthRange depth, const char* function) {
+    const Mat4<T> m = matrix_of(rows, k_near, depth);
     const std::optional<Mat4<T>> inv = detail::inverse_from_rows(m);
     if (!inv) {
         return detail::error<T>(function, "planes give a degenerate frustum (far plane through the eye)",
@@ -156,32 +163,87 @@ Result<T> k_near_through(const SideRows<T>& rows, const Vec3<T>& far_point, Dept
 
 } // namespace
 
-template <class T>
-Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const Vec3<T>& far_point, DepthRange depth) {
-    return from_planes(planes, std::vector<Vec3<T>>{far_point}, depth);
-}
+namespace {
 
+// §4.1 for several points: the smallest K_n of them (F(Q_i) >= 0 for every
+// point <=> K_n <= K_n(Q_i)).
 template <class T>
-Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector<Vec3<T>>& far_points,
-                                  DepthRange depth) {
-    const auto rows = side_rows(planes, "from_planes");
-    if (!rows) {
-        return rows.take_error();
-    }
-    if (far_points.empty()) {
+Result<T> k_near_through_all(const SideRows<T>& rows, const Vec3<T>* far_points, std::size_t count,
+                             DepthRange depth) {
+    if (count == 0) {
         return detail::error_text("from_planes", "needs at least one far point", "none");
     }
-    // F(Q_i) >= 0 for every point <=> K_n <= K_n(Q_i): take the smallest.
     T k_near = std::numeric_limits<T>::infinity();
-    for (const Vec3<T>& point : far_points) {
-        const auto k = k_near_through(*rows, point, depth);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto k = k_near_through(rows, far_points[i], depth);
         if (!k) {
             return k.take_error();
         }
         k_near = std::min(k_near, *k);
     }
-    return assemble(*rows, k_near, depth, "from_planes");
+    return k_near;
 }
+
+} // namespace
+
+template <class T>
+Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const Vec3<T>& far_point, DepthRange depth) {
+    return detail::from_planes_points(planes, &far_point, 1, depth);
+}
+
+template <class T>
+Result<MatrixPair<T>> from_planes(const SidePlanes<T>& planes, const std::vector<Vec3<T>>& far_points,
+                                  DepthRange depth) {
+    return detail::from_planes_points(planes, far_points.data(), far_points.size(), depth);
+}
+
+namespace {
+
+// §4.1's side rows and K_n for the far points (the checks of both, in order).
+template <class T>
+struct RowsAndK {
+    SideRows<T> rows;
+    T k_near;
+};
+template <class T>
+Result<RowsAndK<T>> rows_through(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
+                                 DepthRange depth) {
+    auto rows = side_rows(planes, "from_planes");
+    if (!rows) {
+        return rows.take_error();
+    }
+    const auto k_near = k_near_through_all(*rows, far_points, count, depth);
+    if (!k_near) {
+        return k_near.take_error();
+    }
+    return RowsAndK<T>{*rows, *k_near};
+}
+
+} // namespace
+
+namespace detail {
+
+template <class T>
+Result<MatrixPair<T>> from_planes_points(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
+                                         DepthRange depth) {
+    const auto found = rows_through(planes, far_points, count, depth);
+    if (!found) {
+        return found.take_error();
+    }
+    return assemble(found->rows, found->k_near, depth, "from_planes");
+}
+
+template <class T>
+Result<Mat4<T>> from_planes_matrix(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
+                                   DepthRange depth) {
+    const auto found = rows_through(planes, far_points, count, depth);
+    if (!found) {
+        return found.take_error();
+    }
+    return matrix_of(found->rows, found->k_near, depth);
+}
+
+} // namespace detail
 
 template <class T>
 Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>& planes, DepthRange depth,
@@ -211,7 +273,11 @@ Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>& planes, D
 #define FRUSTUM_INSTANTIATE(T)                                                                              \
     template Result<MatrixPair<T>> from_planes(const SidePlanes<T>&, const Vec3<T>&, DepthRange);           \
     template Result<MatrixPair<T>> from_planes(const SidePlanes<T>&, const std::vector<Vec3<T>>&, DepthRange); \
-    template Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>&, DepthRange, int);
+    template Result<GrownFrustum<T>> from_planes_volume_growth(const SidePlanes<T>&, DepthRange, int);     \
+    template Result<MatrixPair<T>> detail::from_planes_points(const SidePlanes<T>&, const Vec3<T>*, std::size_t, \
+                                                              DepthRange);                                     \
+    template Result<Mat4<T>> detail::from_planes_matrix(const SidePlanes<T>&, const Vec3<T>*, std::size_t,       \
+                                                        DepthRange);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)
 

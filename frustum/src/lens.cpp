@@ -1,6 +1,10 @@
 #include "frustum/lens.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/from_planes_points.hpp"
+#include "frustum/detail/lens_matrices.hpp"
+#include "frustum/detail/pair_factory.hpp"
+#include "frustum/detail/tile_grid_writer.hpp"
 #include "frustum/from_planes.hpp"
 #include "frustum/queries.hpp"
 
@@ -21,38 +25,48 @@ Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens) {
 
 namespace {
 
-// The plane through the eye and two points, unit normal, positive on the side of `inside`.
+// The plane through the eye and two points, unit normal (a tile faces it
+// inward with facing()).
 template <class T>
-Plane<T> side_plane(const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
-    return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye).facing(inside);
+Plane<T> edge_plane(const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b) {
+    return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye);
 }
 
-} // namespace
-
-template <class T>
-Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
-                                        int height_px, int columns, int rows) {
+// The planes and far points of every tile, built once per grid line and
+// corner and handed to `finish(index, column, row, sides, far_points)` tile
+// by tile. Shared corners and edge planes are the same expressions a tile
+// on its own would evaluate (lens_warp of the same pixel, the same cross
+// product and normalization; facing() per tile), so the bits are those of
+// building each tile alone. `out` gets the crop_tiles() layout.
+template <class T, class Finish>
+Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
+                 int rows, TileGrid<T>& out, Finish&& finish) {
     if (!(lens.radius_m > T(0)) || !(lens.power > T(0)) || !std::isfinite(lens.radius_m) ||
         !std::isfinite(lens.power) || !std::isfinite(lens.center_m.x) || !std::isfinite(lens.center_m.y)) {
+        detail::TileGridWriter::clear(out);
         return detail::error<T>("lens_tiles", "lens needs a finite centre, radius > 0 and power > 0",
                                 {{"center_x", lens.center_m.x}, {"center_y", lens.center_m.y},
                                  {"radius", lens.radius_m}, {"power", lens.power}});
     }
-    auto layout = crop_tiles(camera, width_px, height_px, columns, rows);
-    if (!layout) {
-        return layout.take_error();
+    if (Status layout = crop_tiles(camera, width_px, height_px, columns, rows, out); !layout) {
+        return layout;
     }
+    const auto failed = [&out](Error error) {
+        detail::TileGridWriter::clear(out);
+        return error;
+    };
     const auto frame = near_plane_frame(camera);
     if (!frame) {
-        return frame.take_error_in("frustum::lens_tiles()");
+        return failed(frame.take_error_in("frustum::lens_tiles()"));
     }
     const auto camera_planes = planes(camera);
     if (!camera_planes.far) {
-        return detail::error_text("lens_tiles", "needs a finite far plane", "");
+        return failed(detail::error_text("lens_tiles", "needs a finite far plane", ""));
     }
     // How much farther the far plane is than the near plane, seen from the eye.
     const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
                         std::abs(camera_planes.near.distance(frame->eye));
+    const Vec3<T>& eye = frame->eye;
 
     // A moved point of the refraction plane for the pixel position (x, y).
     const auto moved = [&](int x_px, int y_px) {
@@ -60,38 +74,111 @@ Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<
         const Vec2<T> plane_m(ndc.x * frame->half_width_m, ndc.y * frame->half_height_m);
         return frame->point(lens_warp(plane_m, lens));
     };
-    std::vector<Tile<T>> tiles = std::move(layout).value();
-    for (Tile<T>& tile : tiles) {
-        const int x0 = tile.x_px, x1 = tile.x_px + tile.width_px;
-        const int y0 = tile.y_px, y1 = tile.y_px + tile.height_px;
-        const Vec3<T> bottom_left = moved(x0, y0), bottom_right = moved(x1, y0);
-        const Vec3<T> top_right = moved(x1, y1), top_left = moved(x0, y1);
-        const Vec3<T> inside = (bottom_left + bottom_right + top_right + top_left) / T(4);
-        const Vec3<T>& eye = frame->eye;
-        const SidePlanes<T> sides{side_plane(eye, bottom_left, top_left, inside),
-                                  side_plane(eye, bottom_right, top_right, inside),
-                                  side_plane(eye, bottom_left, bottom_right, inside),
-                                  side_plane(eye, top_left, top_right, inside), camera_planes.near};
-        // The far plane keeps each moved corner's ray inside up to the
-        // camera's far distance (one far point would tilt it into the tile).
-        const std::vector<Vec3<T>> far_points{eye + (bottom_left - eye) * far_ratio,
-                                              eye + (bottom_right - eye) * far_ratio,
-                                              eye + (top_right - eye) * far_ratio,
-                                              eye + (top_left - eye) * far_ratio};
-        auto pair = from_planes(sides, far_points, camera.depth());
-        if (!pair) {
-            return detail::error_text("lens_tiles", "a tile's lens frustum is degenerate",
-                                      "tile (" + detail::number(tile.column) + ", " + detail::number(tile.row) +
-                                          "): " + pair.error());
+    const auto far_point = [&](const Vec3<T>& corner) { return eye + (corner - eye) * far_ratio; };
+    const std::size_t n = static_cast<std::size_t>(columns) + 1;
+    // Corners, far points and the planes along the bottom edges of the row
+    // of tiles being built (index r) and of the one above (r + 1).
+    std::vector<Vec3<T>> corners(2 * n), far_points(2 * n);
+    std::vector<Plane<T>> horizontal(2 * n), vertical(n);
+    const auto corner_row = [&](int r, std::size_t half) {
+        for (int c = 0; c <= columns; ++c) {
+            const std::size_t k = half * n + static_cast<std::size_t>(c);
+            corners[k] = moved(out.x_px(c), out.y_px(r));
+            far_points[k] = far_point(corners[k]);
+            if (c > 0) { // the plane through this corner and the one to its left
+                horizontal[k - 1] = edge_plane(eye, corners[k - 1], corners[k]);
+            }
         }
-        tile.pair = std::move(pair).value();
+    };
+    corner_row(0, 0);
+    for (int r = 0; r < rows; ++r) {
+        const std::size_t lo = static_cast<std::size_t>(r % 2) * n, hi = n - lo; // bottom, top halves
+        corner_row(r + 1, hi / n);
+        for (std::size_t c = 0; c < n; ++c) {
+            vertical[c] = edge_plane(eye, corners[lo + c], corners[hi + c]);
+        }
+        for (int c = 0; c < columns; ++c) {
+            const std::size_t k = static_cast<std::size_t>(c);
+            const Vec3<T>& bottom_left = corners[lo + k];
+            const Vec3<T>& bottom_right = corners[lo + k + 1];
+            const Vec3<T>& top_right = corners[hi + k + 1];
+            const Vec3<T>& top_left = corners[hi + k];
+            const Vec3<T> inside = (bottom_left + bottom_right + top_right + top_left) / T(4);
+            const SidePlanes<T> sides{vertical[k].facing(inside), vertical[k + 1].facing(inside),
+                                      horizontal[lo + k].facing(inside), horizontal[hi + k].facing(inside),
+                                      camera_planes.near};
+            // The far plane keeps each moved corner's ray inside up to the
+            // camera's far distance (one far point would tilt it into the tile).
+            const Vec3<T> tile_far[4] = {far_points[lo + k], far_points[lo + k + 1], far_points[hi + k + 1],
+                                         far_points[hi + k]};
+            if (Status status = finish(out.index(c, r), c, r, sides, tile_far); !status) {
+                return failed(status.take_error());
+            }
+        }
     }
-    return tiles;
+    return {};
 }
+
+// A tile's lens frustum failed: the error names the tile.
+Error tile_error(int column, int row, const std::string& error) {
+    return detail::error_text("lens_tiles", "a tile's lens frustum is degenerate",
+                              "tile (" + detail::number(column) + ", " + detail::number(row) + "): " + error);
+}
+
+} // namespace
+
+template <class T>
+Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
+                  int rows, TileGrid<T>& out) {
+    using detail::TileGridWriter;
+    return lens_grid(camera, lens, width_px, height_px, columns, rows, out,
+                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far) -> Status {
+                         auto pair = detail::from_planes_points(sides, far, 4, camera.depth());
+                         if (!pair) {
+                             return tile_error(c, r, pair.error());
+                         }
+                         TileGridWriter::matrices(out)[i] = pair->matrix();
+                         TileGridWriter::inverses(out)[i] = pair->inverse();
+                         TileGridWriter::set_traits(out, detail::PairFactory::traits(*pair));
+                         return {};
+                     });
+}
+
+template <class T>
+Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
+                                        int height_px, int columns, int rows) {
+    TileGrid<T> grid;
+    if (Status status = lens_tiles(camera, lens, width_px, height_px, columns, rows, grid); !status) {
+        return status.take_error();
+    }
+    return detail::tiles_of(grid);
+}
+
+namespace detail {
+
+template <class T>
+Status lens_tile_matrices(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px,
+                          int columns, int rows, TileGrid<T>& layout, std::vector<Mat4<T>>& matrices) {
+    matrices.resize(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
+    return lens_grid(camera, lens, width_px, height_px, columns, rows, layout,
+                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far) -> Status {
+                         auto m = from_planes_matrix(sides, far, 4, camera.depth());
+                         if (!m) {
+                             return tile_error(c, r, m.error());
+                         }
+                         matrices[i] = *m;
+                         return {};
+                     });
+}
+
+} // namespace detail
 
 #define FRUSTUM_INSTANTIATE(T)                                                                             \
     template Vec2<T> lens_warp(const Vec2<T>&, const Lens<T>&);                                            \
-    template Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>&, const Lens<T>&, int, int, int, int);
+    template Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>&, const Lens<T>&, int, int, int, int); \
+    template Status lens_tiles(const MatrixPair<T>&, const Lens<T>&, int, int, int, int, TileGrid<T>&);         \
+    template Status detail::lens_tile_matrices(const MatrixPair<T>&, const Lens<T>&, int, int, int, int,       \
+                                               TileGrid<T>&, std::vector<Mat4<T>>&);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)
 

@@ -14,6 +14,7 @@
 #include "random_cases.hpp"
 #include "reinvert.hpp"
 
+#include <frustum/detail/lens_matrices.hpp>
 #include <frustum/detail/plane_intersection.hpp>
 
 #include <benchmark/benchmark.h>
@@ -199,8 +200,21 @@ void CropTiles_Analytic(benchmark::State& s) {
     run<T>(s, [g](const Case<T>& c) { return frustum::crop_tiles(c.camera, 1280, 720, g, g); });
     per_tile(s, g * g);
 }
+// The grid form: the same tiles written into one TileGrid kept across
+// iterations (as a renderer keeps it from frame to frame: no allocation).
+template <class T>
+void CropTiles_Grid(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    frustum::TileGrid<T> grid;
+    run<T>(s, [g, &grid](const Case<T>& c) {
+        frustum::Status status = frustum::crop_tiles(c.camera, 1280, 720, g, g, grid);
+        benchmark::ClobberMemory();
+        return status.ok();
+    });
+    per_tile(s, g * g);
+}
 // Per tile: its crop rectangle, the new matrix (eq. 14), glm::inverse; the
-// tiles go into a vector like crop_tiles' result.
+// tiles go into a vector allocated once, like the grid's storage.
 template <class T, class Inverse>
 void crop_tiles_reinvert(benchmark::State& s) {
     const int g = static_cast<int>(s.range(0));
@@ -238,6 +252,38 @@ void LensTiles_Analytic(benchmark::State& s) {
     run<T>(s, [g, &lens](const Case<T>& c) { return frustum::lens_tiles(c.camera, lens, 1280, 720, g, g); });
     per_tile(s, g * g);
 }
+template <class T>
+void LensTiles_Grid(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    const auto lens = bench_lens<T>();
+    frustum::TileGrid<T> grid;
+    run<T>(s, [g, &lens, &grid](const Case<T>& c) {
+        frustum::Status status = frustum::lens_tiles(c.camera, lens, 1280, 720, g, g, grid);
+        benchmark::ClobberMemory();
+        return status.ok();
+    });
+    per_tile(s, g * g);
+}
+// Per tile: its matrix built as lens_tiles builds it (the same shared
+// corners, planes and far plane: detail::lens_tile_matrices), then inverted.
+template <class T, class Inverse>
+void lens_tiles_reinvert(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    const auto lens = bench_lens<T>();
+    frustum::TileGrid<T> layout;
+    std::vector<frustum::Mat4<T>> matrices;
+    std::vector<frustum::Mat4<T>> inverses(static_cast<std::size_t>(g * g));
+    run<T>(s, [g, &lens, &layout, &matrices, &inverses](const Case<T>& c) {
+        const frustum::Status status =
+            frustum::detail::lens_tile_matrices(c.camera, lens, 1280, 720, g, g, layout, matrices);
+        for (std::size_t t = 0; t < matrices.size(); ++t) {
+            inverses[t] = Inverse{}(matrices[t]);
+        }
+        benchmark::ClobberMemory();
+        return status.ok();
+    });
+    per_tile(s, g * g);
+}
 // What a tile's analytic inverse costs inside lens_tiles (§4: rows to
 // inverse by plane intersections) against inverting the same matrix: the
 // baseline per tile is LensTiles_Analytic - InverseFromRows + GlmInverse.
@@ -273,12 +319,18 @@ void InverseFromRows_Only(benchmark::State& s) {
     BENCHMARK_TEMPLATE(inverse_only, T, bench::EigenInverse)->Name("EigenInverse_Only<" #T ">");     \
     BENCHMARK_TEMPLATE(InverseFromRows_Only, T);                                                     \
     BENCHMARK_TEMPLATE(CopyPair_Only, T);                                                            \
-    BENCHMARK_TEMPLATE(CropTiles_Analytic, T)->Arg(16)->Arg(32);                                     \
+    BENCHMARK_TEMPLATE(CropTiles_Analytic, T)->Arg(8)->Arg(16)->Arg(32);                             \
+    BENCHMARK_TEMPLATE(CropTiles_Grid, T)->Arg(8)->Arg(16)->Arg(32);                                 \
     BENCHMARK_TEMPLATE(crop_tiles_reinvert, T, bench::GlmInverse)                                    \
-        ->Name("CropTiles_Reinvert<" #T ">")->Arg(16)->Arg(32);                                      \
+        ->Name("CropTiles_Reinvert<" #T ">")->Arg(8)->Arg(16)->Arg(32);                              \
     BENCHMARK_TEMPLATE(crop_tiles_reinvert, T, bench::EigenInverse)                                  \
-        ->Name("CropTiles_Eigen<" #T ">")->Arg(16)->Arg(32);                                         \
-    BENCHMARK_TEMPLATE(LensTiles_Analytic, T)->Arg(4)->Arg(16)->Arg(32);
+        ->Name("CropTiles_Eigen<" #T ">")->Arg(8)->Arg(16)->Arg(32);                                 \
+    BENCHMARK_TEMPLATE(LensTiles_Analytic, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                     \
+    BENCHMARK_TEMPLATE(LensTiles_Grid, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                         \
+    BENCHMARK_TEMPLATE(lens_tiles_reinvert, T, bench::GlmInverse)                                    \
+        ->Name("LensTiles_Reinvert<" #T ">")->Arg(4)->Arg(8)->Arg(16)->Arg(32);                      \
+    BENCHMARK_TEMPLATE(lens_tiles_reinvert, T, bench::EigenInverse)                                  \
+        ->Name("LensTiles_Eigen<" #T ">")->Arg(4)->Arg(8)->Arg(16)->Arg(32);
 
 FRUSTUM_BENCH_OPS(float)
 FRUSTUM_BENCH_OPS(double)

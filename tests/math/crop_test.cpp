@@ -29,6 +29,18 @@ CropRect<double> random_rect(Random& rng) {
     return {rng.uniform(0, fw - w), rng.uniform(0, fh - h), w, h, fw, fh};
 }
 
+// A random camera, reflected half of the time (the winding flag rides along).
+template <class T>
+MatrixPair<T> maybe_reflected(Random& rng) {
+    const MatrixPair<T> pair = make<T>(random_camera(rng));
+    if (!rng.coin()) {
+        return pair;
+    }
+    const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
+    REQUIRE(r.ok());
+    return *r;
+}
+
 template <class T>
 CropRect<T> as(const CropRect<double>& r) {
     return {T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
@@ -97,20 +109,14 @@ TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of t
 TEST_CASE_TEMPLATE("crop then uncrop returns the original; flags and depth carried", T, float, double) {
     Random rng(92);
     for (int i = 0; i < 1000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        MatrixPair<T> pair = make<T>(c);
-        if (rng.coin()) {
-            const auto r = frustum::reflect(pair, Plane<T>(0, 1, 0, 3));
-            REQUIRE(r.ok());
-            pair = *r;
-        }
+        const MatrixPair<T> pair = maybe_reflected<T>(rng);
         const CropRect<T> rect = as<T>(random_rect(rng));
         const auto cropped = frustum::crop(pair, rect);
         REQUIRE_MESSAGE(cropped.ok(), cropped.error());
         const auto back = frustum::uncrop(*cropped, rect);
         REQUIRE(back.ok());
         CHECK(back->flips_winding() == pair.flips_winding());
-        CHECK(back->depth() == c.depth);
+        CHECK(back->depth() == pair.depth());
         // Scales up to 20 (a 5% crop) and back: a few ulp times 20.
         CHECK(column_relative_diff(back->matrix(), pair.matrix()) <= loose<T>());
         CHECK(column_relative_diff(back->inverse(), pair.inverse()) <= loose<T>());
@@ -185,6 +191,104 @@ TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
             CHECK(hits == 1);
         }
     }
+}
+
+// Bit for bit where the compiler does not fuse multiply-adds (x86-64,
+// armhf, wasm, aarch64 with -ffp-contract=off). Where it may (__FP_FAST_FMA:
+// aarch64 with GCC's default contraction), the grid's loop can hoist the
+// row's product b inv_1 out of the tile loop and round it before the
+// subtraction crop() fuses, so inverse column 3 may move by an ulp of its
+// largest entry (docs/porting.md, per-variant drift).
+template <class T>
+bool same_tile_inverse(const frustum::Mat4<T>& batch, const frustum::Mat4<T>& single) {
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    if (batch[0] != single[0] || batch[1] != single[1] || batch[2] != single[2]) {
+        return false;
+    }
+    T largest = 0;
+    for (int i = 0; i < 4; ++i) {
+        largest = std::max(largest, std::abs(single[3][i]));
+    }
+    for (int i = 0; i < 4; ++i) {
+        if (!(std::abs(batch[3][i] - single[3][i]) <= 2 * std::numeric_limits<T>::epsilon() * largest)) {
+            return false;
+        }
+    }
+    return true;
+#else
+    return batch == single;
+#endif
+}
+
+TEST_CASE_TEMPLATE("crop_tiles into a TileGrid: every tile is crop() of its rectangle, bit for bit", T, float,
+                   double) {
+    // One grid reused across sizes that grow and shrink (its storage is
+    // kept), cameras in every depth range, half of them reflected (the
+    // winding flag rides along), grids from 1 x 1 up to 40 x 33.
+    Random rng(94);
+    frustum::TileGrid<T> grid;
+    for (int i = 0; i < 120; ++i) {
+        const MatrixPair<T> pair = maybe_reflected<T>(rng);
+        const int w = 40 + rng.index(1900), h = 33 + rng.index(1050);
+        const int cols = 1 + rng.index(40), rows = 1 + rng.index(33);
+        CAPTURE(w);
+        CAPTURE(h);
+        CAPTURE(cols);
+        CAPTURE(rows);
+        const frustum::Status status = frustum::crop_tiles(pair, w, h, cols, rows, grid);
+        REQUIRE_MESSAGE(status.ok(), status.error());
+        REQUIRE(grid.columns() == cols);
+        REQUIRE(grid.rows() == rows);
+        REQUIRE(grid.size() == static_cast<std::size_t>(cols * rows));
+        REQUIRE(grid.matrices().size() == grid.size());
+        REQUIRE(grid.inverses().size() == grid.size());
+        const auto tiles = frustum::crop_tiles(pair, w, h, cols, rows);
+        REQUIRE(tiles.ok());
+        REQUIRE(tiles->size() == grid.size());
+        for (int r = 0; r < rows; ++r) {
+            for (int col = 0; col < cols; ++col) {
+                const std::size_t k = grid.index(col, r);
+                const auto same = frustum::crop(pair, CropRect<T>{T(grid.x_px(col)), T(grid.y_px(r)),
+                                                                  T(grid.width_px(col)), T(grid.height_px(r)),
+                                                                  T(w), T(h)});
+                REQUIRE(same.ok());
+                // Exact equality: the same IEEE operations in the same order.
+                CHECK(grid.matrices()[k] == same->matrix());
+                CHECK(same_tile_inverse(grid.inverses()[k], same->inverse()));
+                const MatrixPair<T> p = grid.pair(k);
+                CHECK(p.matrix() == same->matrix());
+                CHECK(p.inverse() == grid.inverses()[k]);
+                CHECK(p.depth() == pair.depth());
+                CHECK(p.flips_winding() == pair.flips_winding());
+                // The vector form is the grid's tiles.
+                const frustum::Tile<T>& t = (*tiles)[k];
+                const frustum::Tile<T> g = grid.tile(k);
+                CHECK(t.column == col);
+                CHECK(t.row == r);
+                CHECK(g.column == col);
+                CHECK(g.row == r);
+                CHECK(t.x_px == grid.x_px(col));
+                CHECK(t.y_px == grid.y_px(r));
+                CHECK(t.width_px == grid.width_px(col));
+                CHECK(t.height_px == grid.height_px(r));
+                CHECK(t.pair.matrix() == same->matrix());
+                CHECK(same_tile_inverse(t.pair.inverse(), same->inverse()));
+                CHECK(t.pair.flips_winding() == pair.flips_winding());
+            }
+        }
+        CHECK(grid.x_px(0) == 0);
+        CHECK(grid.x_px(cols) == w);
+        CHECK(grid.y_px(0) == 0);
+        CHECK(grid.y_px(rows) == h);
+    }
+    // A refusal: the same text as the vector form, and nothing left in the grid.
+    const MatrixPair<T> pair = make<T>(random_camera(rng));
+    const frustum::Status bad = frustum::crop_tiles(pair, 4, 600, 5, 2, grid);
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error() == frustum::crop_tiles(pair, 4, 600, 5, 2).error());
+    CHECK(grid.size() == 0);
+    CHECK(grid.columns() == 0);
+    CHECK(grid.matrices().empty());
 }
 
 } // TEST_SUITE

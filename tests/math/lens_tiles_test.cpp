@@ -1,6 +1,8 @@
 // Paper §5.4: lens refraction tiles.
 #include "support.hpp"
 
+#include <frustum/detail/lens_matrices.hpp>
+
 using namespace frustum;
 
 namespace {
@@ -157,6 +159,91 @@ TEST_CASE("from_planes with several far points takes the nearest plane that keep
     double factor = 0.0;
     CHECK(factor_deviation(both->matrix(), nearest->matrix(), &factor) < 1e-12);
     CHECK_FALSE(from_planes(sides, std::vector<glm::dvec3>{}, DepthRange::ZeroToOne).ok());
+}
+
+// One tile's lens frustum built on its own, as lens_tiles() did before it
+// shared corners and edge planes between neighbours: four warped corners,
+// four side planes and a vector of four far points per tile.
+template <class T>
+Result<MatrixPair<T>> lens_tile_alone(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
+                                      int height_px, const Tile<T>& tile) {
+    const auto frame = near_plane_frame(camera);
+    const auto camera_planes = planes(camera);
+    const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
+                        std::abs(camera_planes.near.distance(frame->eye));
+    const auto moved = [&](int x_px, int y_px) {
+        const Vec2<T> ndc(T(-1) + T(2) * T(x_px) / T(width_px), T(-1) + T(2) * T(y_px) / T(height_px));
+        const Vec2<T> plane_m(ndc.x * frame->half_width_m, ndc.y * frame->half_height_m);
+        return frame->point(lens_warp(plane_m, lens));
+    };
+    const auto side = [](const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
+        return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye).facing(inside);
+    };
+    const int x0 = tile.x_px, x1 = tile.x_px + tile.width_px;
+    const int y0 = tile.y_px, y1 = tile.y_px + tile.height_px;
+    const Vec3<T> bl = moved(x0, y0), br = moved(x1, y0), tr = moved(x1, y1), tl = moved(x0, y1);
+    const Vec3<T> inside = (bl + br + tr + tl) / T(4);
+    const Vec3<T>& eye = frame->eye;
+    const SidePlanes<T> sides{side(eye, bl, tl, inside), side(eye, br, tr, inside), side(eye, bl, br, inside),
+                              side(eye, tl, tr, inside), camera_planes.near};
+    const std::vector<Vec3<T>> far{eye + (bl - eye) * far_ratio, eye + (br - eye) * far_ratio,
+                                   eye + (tr - eye) * far_ratio, eye + (tl - eye) * far_ratio};
+    return from_planes(sides, far, camera.depth());
+}
+
+TEST_CASE_TEMPLATE("lens_tiles into a TileGrid: each tile bit for bit the tile built alone", T, float, double) {
+    TileGrid<T> grid, layout;
+    std::vector<Mat4<T>> matrices;
+    const struct {
+        int width_px, height_px, columns, rows;
+    } grids[] = {{64, 64, 1, 1}, {64, 48, 3, 2}, {256, 256, 8, 8}, {1280, 720, 7, 5}};
+    for (DepthRange depth : mtest::all_depth_ranges) {
+        const MatrixPair<T> camera = lens_camera(depth).template cast<T>();
+        const auto frame = near_plane_frame(camera);
+        REQUIRE(frame.ok());
+        for (const T power : {T(2), T(1.5), T(0.7)}) {
+            const Lens<T> lens{Vec2<T>(T(0.1), T(-0.05)) * frame->half_height_m, T(0.6) * frame->half_height_m,
+                               power};
+            for (const auto& g : grids) {
+                CAPTURE(depth);
+                CAPTURE(power);
+                CAPTURE(g.columns);
+                CAPTURE(g.rows);
+                const Status status = lens_tiles(camera, lens, g.width_px, g.height_px, g.columns, g.rows, grid);
+                REQUIRE_MESSAGE(status.ok(), status.error());
+                const auto tiles = lens_tiles(camera, lens, g.width_px, g.height_px, g.columns, g.rows);
+                REQUIRE(tiles.ok());
+                const Status only = detail::lens_tile_matrices(camera, lens, g.width_px, g.height_px, g.columns,
+                                                               g.rows, layout, matrices);
+                REQUIRE(only.ok());
+                REQUIRE(grid.size() == tiles->size());
+                REQUIRE(matrices.size() == grid.size());
+                for (std::size_t k = 0; k < grid.size(); ++k) {
+                    const Tile<T>& tile = (*tiles)[k];
+                    const auto alone = lens_tile_alone(camera, lens, g.width_px, g.height_px, tile);
+                    REQUIRE(alone.ok());
+                    CHECK(grid.matrices()[k] == alone->matrix());
+                    CHECK(grid.inverses()[k] == alone->inverse());
+                    CHECK(grid.pair(k).depth() == alone->depth());
+                    CHECK(grid.pair(k).flips_winding() == alone->flips_winding());
+                    CHECK(tile.pair.matrix() == alone->matrix());
+                    CHECK(tile.pair.inverse() == alone->inverse());
+                    CHECK(matrices[k] == alone->matrix());
+                    CHECK(grid.tile(k).x_px == tile.x_px);
+                    CHECK(grid.tile(k).height_px == tile.height_px);
+                }
+            }
+        }
+    }
+    // A refusal: the vector form's text, and the grid left empty.
+    const auto ortho = orthographic<double>(-1, 1, -1, 1, 1, 10, DepthRange::ZeroToOne);
+    REQUIRE(ortho.ok());
+    const MatrixPair<T> flat = ortho->template cast<T>();
+    const Lens<T> lens{Vec2<T>(T(0)), T(0.5), T(2)};
+    const Status bad = lens_tiles(flat, lens, 64, 64, 2, 2, grid);
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error() == lens_tiles(flat, lens, 64, 64, 2, 2).error());
+    CHECK(grid.size() == 0);
 }
 
 TEST_CASE("lens_tiles rejects bad lenses and cameras") {

@@ -42,6 +42,10 @@ Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens);
 // tiles render correctly but fail the literal §5.5 test (far corners
 // behind the eye): the limitation of affine frustums that §6 addresses (the camera must be perspective with a finite
 // far plane, without an oblique near plane).
+// The grid form writes into `out` (reusing its storage; left empty on an error).
+template <class T>
+Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
+                  int rows, TileGrid<T>& out);
 template <class T>
 Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
                                         int height_px, int columns, int rows);

@@ -1,0 +1,109 @@
+// Driver for scripts/count-aarch64.sh, batched part: runs one batched
+// update of a G x G grid of a 1280 x 720 image `repeats` times on one fixed,
+// valid camera (success path), so that the difference of two instruction
+// counts under qemu divided by the difference of repeats is one call; the
+// script divides by G * G for the count per tile. The baselines build the
+// same tiles' matrices and invert each with glm::inverse, as bench_ops does.
+//
+//   count_tiles_driver <op> <G> <repeats>
+//   op: crop_tiles crop_tiles_glm lens_tiles lens_tiles_glm
+#include "reinvert.hpp"
+
+#include <frustum/detail/lens_matrices.hpp>
+#include <frustum/frustum.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <vector>
+
+namespace {
+
+using frustum::DepthRange;
+
+template <class V>
+void keep(V& value) {
+    asm volatile("" : : "r"(&value) : "memory");
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: count_tiles_driver <op> <G> <repeats>\n");
+        return 2;
+    }
+    const char* op = argv[1];
+    const int g = std::atoi(argv[2]);
+    const int repeats = std::atoi(argv[3]);
+    const auto projection =
+        frustum::perspective(1.0f, 16.0f / 9.0f, 0.1f, std::optional<float>(100.0f), DepthRange::ZeroToOne);
+    const auto view = frustum::look_at(glm::vec3(0.0f, 1.0f, 3.0f), glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    if (!projection || !view || g < 1) {
+        std::fprintf(stderr, "count_tiles_driver: %s%s (G=%d)\n", projection.error().c_str(), view.error().c_str(), g);
+        return 1;
+    }
+    frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
+    const bench::RawPair<float> raw = bench::raw(pair);
+    const auto frame = frustum::near_plane_frame(pair);
+    frustum::Lens<float> lens{glm::vec2(0.1f, -0.05f) * frame->half_height_m, 0.6f * frame->half_height_m, 1.5f};
+    keep(pair);
+    keep(lens);
+    static const char* const ops[] = {"crop_tiles", "crop_tiles_glm", "lens_tiles", "lens_tiles_glm"};
+    int which = -1;
+    for (int k = 0; k < 4; ++k) {
+        if (std::strcmp(op, ops[k]) == 0) {
+            which = k;
+        }
+    }
+    if (which < 0) {
+        std::fprintf(stderr, "count_tiles_driver: unknown op '%s'\n", op);
+        return 2;
+    }
+    // Storage made once, before the counted calls (as a renderer keeps it).
+    frustum::TileGrid<float> grid, layout;
+    std::vector<frustum::Mat4<float>> matrices, inverses(static_cast<std::size_t>(g * g));
+    std::vector<bench::RawPair<float>> raw_tiles(static_cast<std::size_t>(g * g));
+    int failures = 0;
+    failures += !frustum::crop_tiles(pair, 1280, 720, g, g, grid).ok();
+    failures += !frustum::detail::lens_tile_matrices(pair, lens, 1280, 720, g, g, layout, matrices).ok();
+    const auto repeat = [&](auto&& body) {
+        for (int i = 0; i < repeats; ++i) {
+            body();
+            keep(pair);
+        }
+    };
+    switch (which) {
+    case 0: repeat([&] { failures += !frustum::crop_tiles(pair, 1280, 720, g, g, grid).ok(); keep(grid); }); break;
+    case 1:
+        repeat([&] {
+            std::size_t t = 0;
+            for (int r = 0; r < g; ++r) {
+                const int y0 = r * 720 / g, y1 = (r + 1) * 720 / g;
+                for (int c = 0; c < g; ++c) {
+                    const int x0 = c * 1280 / g, x1 = (c + 1) * 1280 / g;
+                    const frustum::CropRect<float> rect{float(x0), float(y0), float(x1 - x0), float(y1 - y0), 1280, 720};
+                    raw_tiles[t++] = bench::crop_reinvert(raw, rect);
+                }
+            }
+            keep(raw_tiles);
+        });
+        break;
+    case 2: repeat([&] { failures += !frustum::lens_tiles(pair, lens, 1280, 720, g, g, grid).ok(); keep(grid); }); break;
+    case 3:
+        repeat([&] {
+            failures += !frustum::detail::lens_tile_matrices(pair, lens, 1280, 720, g, g, layout, matrices).ok();
+            for (std::size_t t = 0; t < matrices.size(); ++t) {
+                inverses[t] = glm::inverse(matrices[t]);
+            }
+            keep(inverses);
+        });
+        break;
+    }
+    if (failures != 0) {
+        std::fprintf(stderr, "count_tiles_driver: %s refused the case (%d times): not the success path\n", op, failures);
+        return 1;
+    }
+    return 0;
+}
