@@ -13,6 +13,7 @@ packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless + GLES 3
   libosmesa6-dev        # OSMesa offscreen fallback
   libglfw3-dev          # desktop window
+  libimgui-dev          # Dear ImGui: the window's control panel (its core; drawn through gl::Functions)
   libbenchmark-dev      # Google Benchmark (bench targets)
   glslang-tools         # glslangValidator: the GLES 3.0 strictness test (tests/gl/glsl_strict_test.cpp)
 )

@@ -109,6 +109,8 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
         state.effect = render::kAllEffects[c - '1'];
     } else if (c == 'H' && !press.repeat) {
         state.show_help = !state.show_help;
+    } else if (c == 'P' && !press.repeat) {
+        state.show_panel = !state.show_panel;
     } else if (c == 'F' && !press.repeat) {
         state.show_inset = !state.show_inset;
     } else if (c == 'R') {

@@ -21,10 +21,11 @@
 namespace window {
 
 inline constexpr int kMaxTiles = 16; // per direction
-// Lens power (paper eq. 34's p) stays within [kMinLensPower, kMaxLensPower],
-// the range `frustum-demo render --lens-power` accepts up to.
+// Lens power (paper eq. 34's p) stays within [kMinLensPower, kMaxLensPower]:
+// the upper end is --lens-power's bound (demo::kMaxLensPower, asserted
+// equal where both are seen, app/demo/window_run.cpp).
 inline constexpr float kMinLensPower = 0.25f;
-inline constexpr float kMaxLensPower = 8.0f;
+inline constexpr float kMaxLensPower = 2.0f;
 
 // What the window shows; Controls::apply() changes it.
 struct ViewerState {
@@ -39,6 +40,7 @@ struct ViewerState {
     float lens_power = 2.0f; // lens effect; > 1 magnifies
     int recursion_depth = 4; // recursion effect: levels, 0..render::kMaxRecursionDepth (keys , .)
     bool show_help = false;
+    bool show_panel = false; // the control panel (key P; --panel starts with it)
     bool show_inset = false; // the frustum view in a corner
     int msaa_samples = 0;    // gl::choose_samples(): 0 = 4 or the context's maximum, 1 = off
     bool quit = false;

@@ -13,11 +13,7 @@ constexpr float kInsetBorderColor[4] = {0.95f, 0.95f, 0.95f, 1.0f};
 } // namespace
 
 frustum::Result<FramePainter> FramePainter::create(const gl::Functions& fn) {
-    auto text = TextOverlay::create(fn);
-    if (!text) {
-        return text.take_error();
-    }
-    return FramePainter(fn, std::move(*text));
+    return FramePainter(fn);
 }
 
 frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl::OffscreenTarget>& slot,
@@ -69,7 +65,7 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
         if (auto status = paint_stereo(renderer, frame, width_px, height_px); !status) {
             return status;
         }
-        return draw_text(renderer, frame, width_px, height_px);
+        return paint_inset(renderer, frame, width_px / 2, width_px / 2, height_px); // over the right eye
     }
     auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
     if (!main) {
@@ -81,7 +77,13 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
     if (auto status = gl::blit_to_window(*fn_, **main, {0, 0, width_px, height_px}); !status) {
         return status;
     }
-    if (const auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
+    return paint_inset(renderer, frame, 0, width_px, height_px);
+}
+
+frustum::Status FramePainter::paint_inset(const render::Renderer& renderer, const Frame& frame, int x_px,
+                                          int width_px, int height_px) {
+    if (auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
+        rect->x += x_px;
         auto inset = sized(inset_target_, rect->width, rect->height, frame.options.msaa_samples);
         if (!inset) {
             return inset.take_error();
@@ -96,17 +98,6 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
         if (auto status = gl::blit_to_window(*fn_, **inset, *rect); !status) {
             return status;
         }
-    }
-    return draw_text(renderer, frame, width_px, height_px);
-}
-
-frustum::Status FramePainter::draw_text(const render::Renderer& renderer, const Frame& frame, int width_px,
-                                        int height_px) {
-    if (!frame.text.empty()) {
-        fn_->BindFramebuffer(GL_FRAMEBUFFER, 0);
-        fn_->Viewport(0, 0, width_px, height_px);
-        return text_.draw(renderer.programs().line, renderer.gpu_depth_range(frame.options.depth), frame.text,
-                          width_px, height_px);
     }
     return {};
 }

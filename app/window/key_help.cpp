@@ -38,6 +38,7 @@ std::vector<KeyHelp> key_help() {
         {"[ ]", "lens power down / up (lens effect)"},
         {", .", "recursion depth down / up, 0..8 (recursion effect)"},
         {"F", "frustum view inset on / off"},
+        {"P", "control panel on / off (options, mirror placement, numbers)"},
         {"H", "this help on / off"},
         {"Esc", "quit"},
     };
