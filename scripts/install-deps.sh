@@ -19,7 +19,7 @@ packages=(
 )
 for flag in "$@"; do
   case "$flag" in
-    --window) packages+=(xvfb x11-apps imagemagick) ;;
+    --window) packages+=(xvfb x11-apps imagemagick xdotool) ;; # xdotool: clicks on the window panel (tests/window/panel_clicks.sh)
     --bench) packages+=(gnuplot-nox libeigen3-dev) ;; # scripts/plot-bench.sh; Eigen: a baseline in bench_ops
     --web) packages+=(emscripten chromium) ;; # make web: the WebGL 2 page and its headless-browser test
     --arm) packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user) ;; # make test-arm, test-aarch64

@@ -13,7 +13,6 @@
 namespace demo {
 namespace {
 
-constexpr float kPanelWidthPx = 330.0f;
 constexpr float kMirrorTravel = 2.0f; // the slide and push sliders: this many mirror sizes either way
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -193,6 +192,17 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             }
         }
     };
+    // A refused value (from the last edit) and why an effect was not drawn, on top.
+    if (error_) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("not applied: %s", error_->c_str());
+        ImGui::PopStyleColor();
+    }
+    if (view.notice) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", view.notice->c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::TextDisabled("hover a name for its --help line");
     rows([](std::optional<render::Effect> effect) { return !effect; });
     const std::string own = std::string(render::to_string(shown)) + " effect";
@@ -211,16 +221,6 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
         } else if (auto* failure = std::get_if<Failure>(&parsed)) {
             error_ = failure->message;
         }
-    }
-    if (error_) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("not applied: %s", error_->c_str());
-        ImGui::PopStyleColor();
-    }
-    if (view.notice) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
-        ImGui::TextWrapped("%s", view.notice->c_str());
-        ImGui::PopStyleColor();
     }
     const float travel_m = kMirrorTravel * view.mirror_size_m;
     if (view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen)) {

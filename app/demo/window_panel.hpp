@@ -20,6 +20,9 @@
 
 namespace demo {
 
+// The panel covers the window's left kPanelWidthPx screen units, full height.
+inline constexpr float kPanelWidthPx = 330.0f;
+
 struct PanelView {
     const window::LiveNumbers* numbers = nullptr;
     std::optional<double> gpu_ms;  // timer query of the last frame, when the context has one

@@ -147,10 +147,17 @@ void apply_panel_settings(const Settings& settings, WindowSession& s, window::Vi
 // The key help (and why an effect was not drawn): frame.text as an ImGui
 // window, "keys\taction" lines as a table, beside the panel when it is shown.
 void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
-    ImGui::SetNextWindowPos(ImVec2(beside_panel ? 340.0f : 8.0f, 8.0f), ImGuiCond_Always);
+    // At most 70% of the width (the long lines wrap) and a smaller font in small windows.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float left_px = beside_panel ? kPanelWidthPx + 8.0f : 8.0f;
+    const float width_px = std::max(120.0f, std::min(0.7f * display.x, display.x - left_px - 8.0f));
+    ImGui::SetNextWindowPos(ImVec2(left_px, 8.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width_px, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("keys (H hides)", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
+    ImGui::SetWindowFontScale(display.y < 600.0f ? 0.8f : 1.0f);
     bool table = false;
     for (const std::string& line : lines) {
         const std::size_t tab = line.find('\t');
@@ -159,17 +166,19 @@ void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
                 ImGui::EndTable();
                 table = false;
             }
-            ImGui::TextUnformatted(line.c_str());
+            ImGui::TextWrapped("%s", line.c_str());
             continue;
         }
         if (!table) {
-            table = ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit);
+            table = ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingStretchProp);
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
         }
         ImGui::TableNextRow();
         ImGui::TableSetColumnIndex(0);
         ImGui::TextUnformatted(line.substr(0, tab).c_str());
         ImGui::TableSetColumnIndex(1);
-        ImGui::TextUnformatted(line.substr(tab + 1).c_str());
+        ImGui::TextWrapped("%s", line.substr(tab + 1).c_str());
     }
     if (table) {
         ImGui::EndTable();
@@ -177,10 +186,10 @@ void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
     ImGui::End();
 }
 
-// The mirror's screen rectangle (bottom-left pixels) as an outline.
+// The mirror's screen rectangle (bottom-left pixels) as an outline, under the panel.
 void outline(const render::PixelRect& rect, int height_px) {
     const float top = static_cast<float>(height_px - rect.y - rect.height);
-    ImGui::GetForegroundDrawList()->AddRect(
+    ImGui::GetBackgroundDrawList()->AddRect(
         ImVec2(static_cast<float>(rect.x), top),
         ImVec2(static_cast<float>(rect.x + rect.width), top + static_cast<float>(rect.height)),
         IM_COL32(255, 220, 40, 255), 0.0f, 0, 2.0f);
@@ -317,7 +326,9 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 view.notice = notice;
                 view.mirror_size_m = control_scene.mirror_size_m;
                 PanelOutcome outcome = panel.draw(state, view);
-                if (numbers.mirror_rect && !frame->stereo) {
+                const bool mirror_shown = frame->effect == render::Effect::Mirror ||
+                                          frame->effect == render::Effect::Curved;
+                if (numbers.mirror_rect && mirror_shown && !frame->stereo) {
                     outline(*numbers.mirror_rect, size.height_px);
                 }
                 if (outcome.settings) {
