@@ -177,7 +177,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     ImGui::SetNextWindowSize(ImVec2(kPanelWidthPx, ImGui::GetIO().DisplaySize.y), ImGuiCond_Always);
     ImGui::Begin("frustum-demo window (P hides)", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(-110.0f);
+    ImGui::PushItemWidth(-125.0f);
     bool edited = false;
     // The rows of the effect shown first, then those of no one effect
     // (--effect, --msaa, fog, stereo), then the other effects' (folded).
@@ -222,6 +222,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             error_ = failure->message;
         }
     }
+    numbers(view);
     const float travel_m = kMirrorTravel * view.mirror_size_m;
     if (view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::SliderAngle("turn", &state.mirror.turn_rad, -180.0f, 180.0f);
@@ -232,7 +233,6 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             state.mirror = {};
         }
     }
-    numbers(view);
     if (ImGui::Button("screenshot")) {
         outcome.screenshot = true;
     }
@@ -258,11 +258,11 @@ void WindowPanel::numbers(const PanelView& view) const {
     matrix("its inverse M^-1 (analytic)", n.pair.inverse());
     ImGui::Text("|M M^-1 - I| = %.3g (largest entry)", n.residual);
     if (n.mirror_rect) {
-        ImGui::Text("mirror on screen: x %d y %d, %dx%d px (outlined)", n.mirror_rect->x, n.mirror_rect->y,
-                    n.mirror_rect->width, n.mirror_rect->height);
+        ImGui::TextWrapped("mirror rectangle: %dx%d px at %d,%d from the bottom left (outlined)",
+                           n.mirror_rect->width, n.mirror_rect->height, n.mirror_rect->x, n.mirror_rect->y);
     }
     for (const window::PassTiming& pass : n.passes) {
-        ImGui::Text("%s: %.1f us CPU", pass.pass.c_str(), pass.cpu_us);
+        ImGui::TextWrapped("%s: %.1f us CPU", pass.pass.c_str(), pass.cpu_us);
         ImGui::TextDisabled("  %s", pass.result.c_str());
     }
     if (view.gpu_ms) {
