@@ -66,7 +66,7 @@ struct EffectSettings {
 // panel), or one of `choices`. Rows without a control (Kind::None) are not
 // in the panel; flags (value nullptr) are checkboxes.
 struct PanelControl {
-    enum class Kind { None, Slider, Choice } kind = Kind::None;
+    enum class Kind { None, Slider, Choice, SceneCamera } kind = Kind::None; // SceneCamera: the scene's cameras
     float low = 0.0f, high = 0.0f;
     bool whole = false;        // whole numbers
     bool logarithmic = false;  // a slider whose range spans decades
@@ -75,13 +75,16 @@ struct PanelControl {
     const char* choices = nullptr; // Kind::Choice: "oblique|rectangle|reflect_only"
 };
 
-// A slider over [low, high]; a choice among "a|b|c".
+// A slider over [low, high]; a choice among "a|b|c"; one of the scene's cameras.
 constexpr PanelControl slider(float low, float high, bool whole = false, bool logarithmic = false,
                               int components = 1, char separator = ',') {
     return {PanelControl::Kind::Slider, low, high, whole, logarithmic, components, separator, nullptr};
 }
 constexpr PanelControl choice(const char* choices) {
     return {PanelControl::Kind::Choice, 0.0f, 0.0f, false, false, 1, ',', choices};
+}
+constexpr PanelControl scene_camera() {
+    return {PanelControl::Kind::SceneCamera, 0.0f, 0.0f, false, false, 1, ',', nullptr};
 }
 
 struct EffectOption {

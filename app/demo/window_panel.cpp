@@ -92,7 +92,7 @@ void WindowPanel::follow(const window::ViewerState& state) {
 }
 
 // One row's widget; true when it changed the command line.
-bool WindowPanel::row_widget(const Option& option) {
+bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
     const PanelControl& control = option.control;
     const std::optional<std::string> given = line_.value(option.name);
     const char* label = option.name.c_str();
@@ -105,8 +105,9 @@ bool WindowPanel::row_widget(const Option& option) {
         }
         return changed;
     }
-    if (control.kind == PanelControl::Kind::Choice) {
-        const std::vector<std::string> choices = split(control.choices, '|');
+    if (control.kind == PanelControl::Kind::Choice || control.kind == PanelControl::Kind::SceneCamera) {
+        const std::vector<std::string> choices =
+            control.kind == PanelControl::Kind::Choice ? split(control.choices, '|') : view.camera_names;
         const std::string shown = given ? *given : "(default)";
         bool changed = false;
         if (ImGui::BeginCombo(label, shown.c_str())) {
@@ -188,7 +189,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
                                    (option.control.kind != PanelControl::Kind::None ||
                                     (option.effect_row && !option.value));
             if (panel_row && take(row_effect(option))) {
-                edited = row_widget(option) || edited;
+                edited = row_widget(option, view) || edited;
             }
         }
     };

@@ -30,6 +30,7 @@ struct PanelView {
     bool gpu_timer_available = false;
     std::optional<std::string> notice; // why an effect was not drawn
     float mirror_size_m = 0.0f; // window::ControlScene's; 0: no mirror sliders
+    std::vector<std::string> camera_names; // the scene's cameras, for --camera (index order)
 };
 
 struct PanelOutcome {
@@ -51,7 +52,7 @@ public:
 
 private:
     void follow(const window::ViewerState& state);
-    bool row_widget(const Option& option);
+    bool row_widget(const Option& option, const PanelView& view);
     void numbers(const PanelView& view) const;
 
     PanelCommandLine line_;

@@ -206,7 +206,12 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
     WindowSession& s = *std::get<std::unique_ptr<WindowSession>>(opened);
     const Reporter reporter{note, note};
     const std::vector<int> attachments = window::mirror_attachments(s.scene);
-    const window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
+    window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
+    std::vector<std::string> camera_names; // --camera in the panel: a name, else the index
+    for (std::size_t i = 0; i < s.scene.cameras.size(); ++i) {
+        const std::string& name = s.scene.cameras[i].name;
+        camera_names.push_back(name.empty() ? std::to_string(i) : name);
+    }
     const window::ControlScene control_scene = window::control_scene(s.scene);
     window::Controls controls(control_scene);
     window::ViewerState state = initial_state(request);
@@ -325,6 +330,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 view.paint_cpu_ms = paint_ms;
                 view.notice = notice;
                 view.mirror_size_m = control_scene.mirror_size_m;
+                view.camera_names = camera_names;
                 PanelOutcome outcome = panel.draw(state, view);
                 const bool mirror_shown = frame->effect == render::Effect::Mirror ||
                                           frame->effect == render::Effect::Curved;
@@ -332,6 +338,16 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                     outline(*numbers.mirror_rect, size.height_px);
                 }
                 if (outcome.settings) {
+                    if (outcome.settings->camera != settings.camera) {
+                        // Another scene camera: found as at start-up (render::find_camera), the orbit dropped.
+                        auto index = render::find_camera(s.scene, outcome.settings->camera);
+                        if (!index) {
+                            return runtime(index.error());
+                        }
+                        s.camera_index = *index;
+                        projection = window::orbit_projection(s.scene, s.camera_index);
+                        state.orbit.reset();
+                    }
                     settings = std::move(*outcome.settings);
                     apply_panel_settings(settings, s, state, reporter);
                     cameras.reset(); // --stereo may have changed the eye's width

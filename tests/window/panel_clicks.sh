@@ -21,15 +21,15 @@ settle() { xdotool mousemove --window "$wid" 470 350; sleep 0.7; }
 shot() { import -window "$wid" "$out/$1"; }
 settle
 shot a.png
-xdotool mousemove --window "$wid" 100 53 click 1 # the --effect list
+xdotool mousemove --window "$wid" 100 76 click 1 # the --effect list (below --camera)
 sleep 0.7
-xdotool mousemove --window "$wid" 40 162 click 1 # its sixth entry: lens
+xdotool mousemove --window "$wid" 40 185 click 1 # its sixth entry: lens
 settle
 shot b.png
-xdotool mousemove --window "$wid" 75 305 click 1 # --lens-power, a quarter along
+xdotool mousemove --window "$wid" 75 328 click 1 # --lens-power, a quarter along
 settle
 shot c.png
-xdotool mousemove --window "$wid" 36 305 click 1 # its left end: 0
+xdotool mousemove --window "$wid" 36 328 click 1 # its left end: 0
 settle
 shot d.png
 xdotool key --window "$wid" Escape
