@@ -38,12 +38,6 @@ std::string join(const float* values, int count, const PanelControl& control) {
     return text;
 }
 
-std::string power_text(float power) {
-    char text[16];
-    std::snprintf(text, sizeof text, "%.3g", static_cast<double>(power));
-    return text;
-}
-
 // The effect a row belongs to: its help line starts with "<effect> effect"
 // (effect_options.cpp's convention); empty for the others.
 std::optional<render::Effect> row_effect(const Option& option) {
@@ -82,7 +76,7 @@ void WindowPanel::follow(const window::ViewerState& state) {
         current_.mirror = state.mirror_method;
     }
     if (first || state.lens_power != current_.lens_power) {
-        line_.set("--lens-power", power_text(state.lens_power));
+        line_.set("--lens-power", render::number_text(state.lens_power));
         current_.lens_power = state.lens_power;
     }
     if (first || state.recursion_depth != current_.recursion_depth) {

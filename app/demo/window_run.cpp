@@ -94,17 +94,24 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
     return session;
 }
 
+// The settings the viewer state holds (the keys change them afterwards):
+// at start-up, and again for each change made in the panel.
+void take_settings(const Settings& settings, window::ViewerState& state) {
+    state.effect = settings.effects.front();
+    state.tile_columns = settings.tile_columns;
+    state.tile_rows = settings.tile_rows;
+    state.mirror_method = settings.mirror;
+    state.lens_power = settings.lens_power; // [ and ] change it
+    state.recursion_depth = settings.recursion_depth;
+    state.msaa_samples = settings.msaa_samples;
+}
+
 window::ViewerState initial_state(const WindowRequest& request) {
     window::ViewerState state;
-    state.effect = request.effects.front();
-    state.tile_columns = request.tile_columns;
-    state.tile_rows = request.tile_rows;
-    state.mirror_method = request.mirror;
-    state.lens_power = request.lens_power; // --lens-power: the start; [ and ] change it
+    take_settings(request, state);
     state.show_help = request.help_overlay;
     state.show_panel = request.panel;
     state.show_inset = request.inset;
-    state.msaa_samples = request.msaa_samples;
     return state;
 }
 
@@ -132,13 +139,7 @@ void apply_effect_settings(const EffectSetup& setup, window::Frame& frame, int w
 // effect options set up anew (the mirror stays where start-up placed it).
 void apply_panel_settings(const Settings& settings, WindowSession& s, window::ViewerState& state,
                           const Reporter& reporter) {
-    state.effect = settings.effects.front();
-    state.tile_columns = settings.tile_columns;
-    state.tile_rows = settings.tile_rows;
-    state.mirror_method = settings.mirror;
-    state.lens_power = settings.lens_power;
-    state.recursion_depth = settings.recursion_depth;
-    state.msaa_samples = settings.msaa_samples;
+    take_settings(settings, state);
     Settings unplaced = settings;
     unplaced.mirror_place = {};
     s.effects = setup_effects(s.scene, unplaced, reporter);

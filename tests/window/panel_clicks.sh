@@ -16,13 +16,27 @@ out=$2
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
-# After each click the pointer leaves the panel (no tooltip over the view).
-settle() { xdotool mousemove --window "$wid" 470 350; sleep 0.7; }
+# After each click the pointer leaves the panel (no tooltip over the view),
+# then the window is read until two reads 0.3 s apart agree (nothing moves
+# in the window once the click is drawn: the live numbers, which change every
+# frame, lie below the 360 px window; a loaded machine only takes longer).
+settle() {
+  xdotool mousemove --window "$wid" 470 350
+  local last="" now
+  for _ in $(seq 40); do
+    sleep 0.3
+    now=$(xwd -id "$wid" -silent | md5sum)
+    if [ "$now" = "$last" ]; then return 0; fi
+    last=$now
+  done
+  echo "panel_clicks.sh: the window did not settle" >&2
+  return 1
+}
 shot() { import -window "$wid" "$out/$1"; }
 settle
 shot a.png
 xdotool mousemove --window "$wid" 100 76 click 1 # the --effect list (below --camera)
-sleep 0.7
+sleep 0.5
 xdotool mousemove --window "$wid" 40 185 click 1 # its sixth entry: lens
 settle
 shot b.png
