@@ -282,6 +282,9 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         if (notice && !state.show_panel) {
             frame->text.insert(frame->text.begin(), *notice);
         }
+        // The help goes into an ImGui window (below), not the painter's text panel.
+        const std::vector<std::string> help = std::move(frame->text);
+        frame->text.clear();
         const auto paint_start = std::chrono::steady_clock::now();
         s.timer->begin();
         frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
@@ -314,13 +317,13 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         }
         shown_effect = state.effect;
         // The panel and the help over the frame (nothing at all when both are hidden).
-        if (state.show_panel || !frame->text.empty()) {
+        if (state.show_panel || !help.empty()) {
             const auto now = std::chrono::steady_clock::now();
             s.imgui->begin_frame(size.width_px, size.height_px,
                                  std::chrono::duration<double>(now - last_frame).count());
             last_frame = now;
-            if (!frame->text.empty()) {
-                draw_help(frame->text, state.show_panel);
+            if (!help.empty()) {
+                draw_help(help, state.show_panel);
             }
             if (state.show_panel) {
                 const window::LiveNumbers numbers = window::live_numbers(*frame, s.scene);

@@ -13,7 +13,11 @@ constexpr float kInsetBorderColor[4] = {0.95f, 0.95f, 0.95f, 1.0f};
 } // namespace
 
 frustum::Result<FramePainter> FramePainter::create(const gl::Functions& fn) {
-    return FramePainter(fn);
+    auto text = TextOverlay::create(fn);
+    if (!text) {
+        return text.take_error();
+    }
+    return FramePainter(fn, std::move(*text));
 }
 
 frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl::OffscreenTarget>& slot,
@@ -65,7 +69,10 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
         if (auto status = paint_stereo(renderer, frame, width_px, height_px); !status) {
             return status;
         }
-        return paint_inset(renderer, frame, width_px / 2, width_px / 2, height_px); // over the right eye
+        if (auto status = paint_inset(renderer, frame, width_px / 2, width_px / 2, height_px); !status) {
+            return status; // the inset over the right eye
+        }
+        return draw_text(renderer, frame, width_px, height_px);
     }
     auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
     if (!main) {
@@ -77,7 +84,10 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
     if (auto status = gl::blit_to_window(*fn_, **main, {0, 0, width_px, height_px}); !status) {
         return status;
     }
-    return paint_inset(renderer, frame, 0, width_px, height_px);
+    if (auto status = paint_inset(renderer, frame, 0, width_px, height_px); !status) {
+        return status;
+    }
+    return draw_text(renderer, frame, width_px, height_px);
 }
 
 frustum::Status FramePainter::paint_inset(const render::Renderer& renderer, const Frame& frame, int x_px,
@@ -98,6 +108,17 @@ frustum::Status FramePainter::paint_inset(const render::Renderer& renderer, cons
         if (auto status = gl::blit_to_window(*fn_, **inset, *rect); !status) {
             return status;
         }
+    }
+    return {};
+}
+
+frustum::Status FramePainter::draw_text(const render::Renderer& renderer, const Frame& frame, int width_px,
+                                        int height_px) {
+    if (!frame.text.empty()) {
+        fn_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+        fn_->Viewport(0, 0, width_px, height_px);
+        return text_.draw(renderer.programs().line, renderer.gpu_depth_range(frame.options.depth), frame.text,
+                          width_px, height_px);
     }
     return {};
 }

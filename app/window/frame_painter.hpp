@@ -3,11 +3,13 @@
 // offscreen target of the framebuffer's size (render::Renderer::render_into)
 // and blitted; the inset likewise at its own size into a corner. Stereo
 // frames: each eye rendered and blitted into its half (left eye left), the
-// inset over the right eye. The help and the control panel are drawn on top
-// by window::ImGuiLayer.
+// inset over the right eye. Then frame.text, when it has lines, as the help
+// panel on top (the web page's; the desktop window shows its help and
+// control panel with window::ImGuiLayer instead and leaves frame.text empty).
 #pragma once
 
 #include "window/frame.hpp"
+#include "window/text_overlay.hpp"
 
 #include <frustum/result.hpp>
 #include <gl/functions.hpp>
@@ -26,7 +28,7 @@ public:
     frustum::Status paint(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
 
 private:
-    explicit FramePainter(const gl::Functions& fn) : fn_(&fn) {}
+    FramePainter(const gl::Functions& fn, TextOverlay text) : fn_(&fn), text_(std::move(text)) {}
 
     // `slot` holding a width x height target with gl::choose_samples(msaa_samples)
     // samples, made anew when its size or sample count differs.
@@ -41,7 +43,11 @@ private:
     frustum::Status paint_inset(const render::Renderer& renderer, const Frame& frame, int x_px, int width_px,
                                 int height_px);
 
+    // The help panel on top of framebuffer 0, when frame.text has lines.
+    frustum::Status draw_text(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
+
     const gl::Functions* fn_;
+    TextOverlay text_;
     std::optional<gl::OffscreenTarget> frame_target_;
     std::optional<gl::OffscreenTarget> inset_target_;
     std::optional<gl::OffscreenTarget> eye_target_;
