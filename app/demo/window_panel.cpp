@@ -61,26 +61,30 @@ void tooltip(const std::string& help) {
 void WindowPanel::follow(const window::ViewerState& state) {
     // The first time, every followed row goes on the command line, so its widget shows the value.
     const bool first = !followed_;
+    const auto keep = [&](const std::string& name, const std::string& value) {
+        line_.set(name, value);
+        accepted_.set(name, value); // the keys' changes are taken at once
+    };
     followed_ = true;
     if (first || current_.effects.empty() || state.effect != current_.effects.front()) {
-        line_.set("--effect", std::string(render::to_string(state.effect)));
+        keep("--effect", std::string(render::to_string(state.effect)));
         current_.effects = {state.effect};
     }
     if (first || state.tile_columns != current_.tile_columns || state.tile_rows != current_.tile_rows) {
-        line_.set("--tiles", std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows));
+        keep("--tiles", std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows));
         current_.tile_columns = state.tile_columns;
         current_.tile_rows = state.tile_rows;
     }
     if (first || state.mirror_method != current_.mirror) {
-        line_.set("--mirror", std::string(render::to_string(state.mirror_method)));
+        keep("--mirror", std::string(render::to_string(state.mirror_method)));
         current_.mirror = state.mirror_method;
     }
     if (first || state.lens_power != current_.lens_power) {
-        line_.set("--lens-power", render::number_text(state.lens_power));
+        keep("--lens-power", render::number_text(state.lens_power));
         current_.lens_power = state.lens_power;
     }
     if (first || state.recursion_depth != current_.recursion_depth) {
-        line_.set("--recursion-depth", std::to_string(state.recursion_depth));
+        keep("--recursion-depth", std::to_string(state.recursion_depth));
         current_.recursion_depth = state.recursion_depth;
     }
 }
@@ -209,10 +213,16 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     }
     if (edited) {
         auto parsed = line_.parse();
-        if (auto* settings = std::get_if<Settings>(&parsed)) {
+        auto* settings = std::get_if<Settings>(&parsed);
+        const std::optional<std::string> refused = settings && view.check ? view.check(*settings) : std::nullopt;
+        if (settings && !refused) {
             error_.reset();
             current_ = *settings;
+            accepted_ = line_;
             outcome.settings = *settings;
+        } else if (refused) {
+            error_ = *refused;
+            line_ = accepted_; // the window keeps what it shows
         } else if (auto* failure = std::get_if<Failure>(&parsed)) {
             error_ = failure->message;
         }

@@ -14,6 +14,7 @@
 #include <window/controls.hpp>
 #include <window/live_numbers.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct PanelView {
     std::optional<std::string> notice; // why an effect was not drawn
     float mirror_size_m = 0.0f; // window::ControlScene's; 0: no mirror sliders
     std::vector<std::string> camera_names; // the scene's cameras, for --camera (index order)
+    // What only the running window can check (e.g. --msaa against the
+    // context's GL_MAX_SAMPLES): a message refuses the parsed settings.
+    std::function<std::optional<std::string>(const Settings&)> check;
 };
 
 struct PanelOutcome {
@@ -42,7 +46,7 @@ class WindowPanel {
 public:
     // args: the window's command line (args[0] "window"); settings: its parse.
     WindowPanel(std::vector<std::string> args, Settings settings)
-        : line_(std::move(args)), current_(std::move(settings)) {}
+        : line_(std::move(args)), accepted_(line_), current_(std::move(settings)) {}
 
     // Rows the keys change (effect, tiles, mirror, lens power, recursion
     // depth) follow `state` first; the mirror sliders edit state.mirror.
@@ -56,6 +60,7 @@ private:
     void numbers(const PanelView& view) const;
 
     PanelCommandLine line_;
+    PanelCommandLine accepted_; // the last command line the window took
     Settings current_;
     std::optional<std::string> error_;
     bool followed_ = false;

@@ -335,6 +335,12 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 view.notice = notice;
                 view.mirror_size_m = control_scene.mirror_size_m;
                 view.camera_names = camera_names;
+                view.check = [&](const Settings& next) -> std::optional<std::string> {
+                    if (auto samples = gl::choose_samples(*s.fn, next.msaa_samples); !samples) {
+                        return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
+                    }
+                    return std::nullopt;
+                };
                 PanelOutcome outcome = panel.draw(state, view);
                 const bool mirror_shown = frame->effect == render::Effect::Mirror ||
                                           frame->effect == render::Effect::Curved;
