@@ -227,6 +227,18 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             error_ = failure->message;
         }
     }
+    if (state.effect == render::Effect::Recursion && state.link_moves.size() >= 2 &&
+        ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const float reach_m = 0.5f * view.scene_radius_m;
+        const char* sides[] = {"left", "right"};
+        for (int i = 0; i < 2; ++i) {
+            render::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
+            ImGui::PushID(i);
+            ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
+            ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);
+            ImGui::PopID();
+        }
+    }
     numbers(view);
     const float travel_m = kMirrorTravel * view.mirror_size_m;
     if (view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen)) {

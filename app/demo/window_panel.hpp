@@ -31,6 +31,7 @@ struct PanelView {
     bool gpu_timer_available = false;
     std::optional<std::string> notice; // why an effect was not drawn
     float mirror_size_m = 0.0f; // window::ControlScene's; 0: no mirror sliders
+    float scene_radius_m = 1.0f; // the recursion mirrors' push sliders span half of it either way
     std::vector<std::string> camera_names; // the scene's cameras, for --camera (index order)
     // What only the running window can check (e.g. --msaa against the
     // context's GL_MAX_SAMPLES): a message refuses the parsed settings.

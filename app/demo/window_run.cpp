@@ -334,6 +334,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 view.paint_cpu_ms = paint_ms;
                 view.notice = notice;
                 view.mirror_size_m = control_scene.mirror_size_m;
+                view.scene_radius_m = window::bounds_radius(s.scene.world_bounds);
                 view.camera_names = camera_names;
                 view.check = [&](const Settings& next) -> std::optional<std::string> {
                     if (auto samples = gl::choose_samples(*s.fn, next.msaa_samples); !samples) {

@@ -8,6 +8,7 @@
 #include <frustum/matrix_pair.hpp>
 #include <gl/window_input.hpp>
 #include <plan/effect.hpp>
+#include <plan/link_moves.hpp>
 #include <plan/view_tree.hpp>
 #include <scene/scene.hpp>
 
@@ -39,6 +40,9 @@ struct ViewerState {
     int tile_rows = 2;
     float lens_power = 2.0f; // lens effect; > 1 magnifies
     int recursion_depth = 4; // recursion effect: levels, 0..render::kMaxRecursionDepth (keys , .)
+    // Recursion effect: the left [0] and right [1] facing mirror, each moved
+    // on its own (keys Z X, C V; with Shift turned) after the frame places them.
+    std::vector<render::LinkMove> link_moves = std::vector<render::LinkMove>(2);
     bool show_help = false;
     bool show_panel = false; // the control panel (key P; --panel starts with it)
     bool show_inset = false; // the frustum view in a corner
@@ -66,6 +70,7 @@ private:
     void key(const gl::KeyPressed& press, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
     bool camera_key(const gl::KeyPressed& press, OrbitCamera& orbit) const;
     bool mirror_key(const gl::KeyPressed& press, MirrorPose& pose) const;
+    bool link_key(const gl::KeyPressed& press, std::vector<render::LinkMove>& moves) const;
     OrbitCamera& start_orbit(const frustum::MatrixPair<float>& main_camera, ViewerState& state) const;
     void drag(const glm::dvec2& delta, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
 

@@ -28,6 +28,8 @@ std::vector<KeyHelp> key_help() {
         {"+ -", "more / fewer tiles"},
         {"[ ]", "lens power down / up (lens effect)"},
         {", .", "recursion depth down / up, 0..8 (recursion effect)"},
+        {"Z X, C V", "left, right facing mirror out / in (recursion effect)"},
+        {"Shift+Z X, C V", "turn the left, right facing mirror (recursion effect)"},
         {"F", "frustum view inset on / off"},
         {"P", "control panel on / off (options, mirror placement, numbers)"},
         {"H", "this help on / off"},

@@ -1,5 +1,6 @@
 #include "window/live_numbers.hpp"
 
+#include <plan/link_moves.hpp>
 #include <plan/view_links.hpp>
 #include <plan/view_tree.hpp>
 
@@ -58,6 +59,7 @@ LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
                 nodes = links.take_error();
                 return;
             }
+            render::move_links(*links, frame.options.link_moves);
             nodes = render::plan_view_tree(camera, *links,
                                            {frame.options.recursion_depth, width_px, height_px,
                                             render::ViewBounds::Tight});

@@ -4,10 +4,12 @@
 #include <doctest/doctest.h>
 
 #include <demo/effect_options.hpp>
+#include <plan/link_moves.hpp>
 #include <window/controls.hpp>
 #include <window/frame.hpp>
 #include <window/key_help.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -217,6 +219,47 @@ TEST_CASE("the help lists every effect, and docs/window.md lists every key") {
         CAPTURE(entry.keys);
         CHECK(docs.str().find("| " + entry.keys + " | " + entry.action + " |") != std::string::npos);
     }
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("window") {
+
+TEST_CASE("Z X and C V move the recursion's two facing mirrors, each on its own; with Shift they turn") {
+    Rig rig;
+    const float step_m = 0.02f * window::bounds_radius(render_test::showcase().world_bounds);
+    rig.send(character('Z'));
+    rig.send(character('Z'));
+    rig.send(character('V', true));
+    CHECK(rig.state.link_moves[0].push_m == doctest::Approx(-2.0f * step_m));
+    CHECK(rig.state.link_moves[0].turn_rad == 0.0f);
+    CHECK(rig.state.link_moves[1].push_m == 0.0f);
+    CHECK(rig.state.link_moves[1].turn_rad == doctest::Approx(0.0872664626f));
+    rig.send(character('X'));
+    rig.send(character('C'));
+    CHECK(rig.state.link_moves[0].push_m == doctest::Approx(-step_m));
+    CHECK(rig.state.link_moves[1].push_m == doctest::Approx(-step_m));
+    CHECK_FALSE(rig.state.orbit); // not camera keys
+    const auto frame = window::make_frame(rig.state, rig.cameras, {}, scene::Bounds{}, 256, 144);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    REQUIRE(frame->options.link_moves.size() == 2);
+    CHECK(frame->options.link_moves[0] == rig.state.link_moves[0]);
+    CHECK(frame->options.link_moves[1] == rig.state.link_moves[1]);
+}
+
+TEST_CASE("move_links: a push slides the mirror along its normal, a turn keeps its frame orthonormal") {
+    const auto placed = render::place_facing_links(render_test::showcase_cameras().main.pair,
+                                                   render_test::showcase().world_bounds, render::LinkSet::Mirrors);
+    REQUIRE_MESSAGE(placed.ok(), placed.error());
+    std::vector<render::ViewLink> links = *placed;
+    render::move_links(links, {{0.5f, 0.0f}, {0.0f, 0.3f}});
+    const glm::vec3 moved = links[0].entry.origin - (*placed)[0].entry.origin;
+    CHECK(glm::length(moved - 0.5f * (*placed)[0].entry.normal()) < 1e-5f);
+    const render::ViewLink& turned = links[1];
+    CHECK(glm::length(turned.entry.origin - (*placed)[1].entry.origin) < 1e-5f); // about its centre
+    CHECK(std::abs(glm::length(turned.entry.x) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::dot(turned.entry.x, turned.entry.y)) < 1e-6f);
+    CHECK(glm::dot(turned.entry.normal(), (*placed)[1].entry.normal()) == doctest::Approx(std::cos(0.3f)));
 }
 
 } // TEST_SUITE
