@@ -275,7 +275,7 @@ void WindowPanel::numbers(const PanelView& view) const {
     matrix("its inverse M^-1 (analytic)", n.pair.inverse());
     ImGui::Text("|M M^-1 - I| = %.3g (largest entry)", n.residual);
     if (n.mirror_rect) {
-        ImGui::TextWrapped("mirror rectangle: %dx%d px at %d,%d from the bottom left (outlined)",
+        ImGui::TextWrapped("mirror rectangle: %dx%d px at %d,%d from the bottom left (outlined in the mirror effects)",
                            n.mirror_rect->width, n.mirror_rect->height, n.mirror_rect->x, n.mirror_rect->y);
     }
     for (const window::PassTiming& pass : n.passes) {

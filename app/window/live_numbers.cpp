@@ -36,8 +36,12 @@ LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
     const frustum::MatrixPair<float>& camera = frame.cameras.main.pair;
     numbers.residual = inverse_residual(camera);
     const int width_px = frame.options.width_px, height_px = frame.options.height_px;
+    const bool mirror_pass = frame.effect == render::Effect::Mirror || frame.effect == render::Effect::Curved ||
+                             frame.effect == render::Effect::Frustum; // the effects that plan the reflection
     if (scene.mirror) {
         numbers.mirror_rect = render::mirror_screen_rect(*scene.mirror, camera, width_px, height_px);
+    }
+    if (scene.mirror && mirror_pass) {
         PassTiming timing{"mirror pair (" + std::string(render::to_string(frame.options.mirror_method)) + ")", 0.0, ""};
         frustum::Result<std::optional<render::ReflectionView>> view = frustum::Error{""};
         timing.cpu_us = microseconds([&] {

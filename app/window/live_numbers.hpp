@@ -2,7 +2,8 @@
 // frame's pairs with the same planning functions the renderer calls: the
 // camera pair and |M M^-1 - I| (the analytic inverse's residual), the
 // mirror's screen rectangle, and per pass the CPU time of the pair updates
-// (plan_reflection for the mirror pass: reflect + oblique near plane + crop;
+// (plan_reflection for the mirror pass of the mirror, curved and frustum
+// effects: reflect + oblique near plane + crop;
 // place_facing_links + plan_view_tree for the recursion). Pure: no GL.
 #pragma once
 
