@@ -53,7 +53,7 @@ set(FRUSTUM_LAYER_TARGETS
   "plan:frustum_plan"
   "render:frustum_render"
   "reference:frustum_reference"
-  "window:frustum_window"
+  "window:frustum_window frustum_window_imgui"
   "vectors:frustum_vectors_lib"
   "demo:frustum_demo_cli"
   "precision:frustum_precision")

@@ -13,12 +13,13 @@ packages=(
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless + GLES 3
   libosmesa6-dev        # OSMesa offscreen fallback
   libglfw3-dev          # desktop window
+  libimgui-dev          # Dear ImGui: the window's control panel (its core; drawn through gl::Functions)
   libbenchmark-dev      # Google Benchmark (bench targets)
   glslang-tools         # glslangValidator: the GLES 3.0 strictness test (tests/gl/glsl_strict_test.cpp)
 )
 for flag in "$@"; do
   case "$flag" in
-    --window) packages+=(xvfb x11-apps imagemagick) ;;
+    --window) packages+=(xvfb x11-apps imagemagick xdotool) ;; # xdotool: clicks on the window panel (tests/window/panel_clicks.sh)
     --bench) packages+=(gnuplot-nox libeigen3-dev) ;; # scripts/plot-bench.sh; Eigen: a baseline in bench_ops
     --web) packages+=(emscripten chromium) ;; # make web: the WebGL 2 page and its headless-browser test
     --arm) packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user) ;; # make test-arm, test-aarch64

@@ -229,13 +229,13 @@ std::optional<Failure> apply_recursion_links(EffectSettings& s, const std::strin
 const std::vector<EffectOption>& effect_options() {
     static const std::vector<EffectOption> table = {
         {"--tiles", "NxM", "tiles effect: columns x rows, each >= 1 and at most one per pixel (default 3x2)",
-         apply_tiles, kRender | kWindow, "4x3"},
+         apply_tiles, kRender | kWindow, "4x3", slider(1, kMaxTileSide, true, true, 2, 'x')},
         {"--tile-borders", nullptr, "tiles effect: draw each tile's border", apply_tile_borders},
         {"--mirror", "M",
          "reflection camera: oblique (reflect + oblique near plane, default) |\n"
          "rectangle (reflected eye through the mirror) | reflect_only (no near\n"
          "plane: shows what is behind the mirror)",
-         apply_mirror, kRender | kWindow, "rectangle"},
+         apply_mirror, kRender | kWindow, "rectangle", choice("oblique|rectangle|reflect_only")},
         {"--mirror-plane", "a,b,c,d",
          "a mirror on the plane a x + b y + c z + d = 0, reflecting towards\n"
          "(a, b, c): a square of the model's diagonal under the model's centre\n"
@@ -245,33 +245,35 @@ const std::vector<EffectOption>& effect_options() {
          "a mirror rectangle: nine numbers cx,cy,cz,ax,ay,az,bx,by,bz, its centre\n"
          "and two sides; reflects towards a x b",
          apply_mirror_rect, kRender | kWindow, "0,0,0,1,0,0,0,1,0"},
-        {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches, kRender | kWindow, "8"},
+        {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches, kRender | kWindow, "8",
+         slider(1, render::kMaxCurvedPatches, true)},
         {"--sagitta", "M",
          "curved effect: the cap's bulge at its centre in metres (default a fifth\n"
          "of the mirror's half-diagonal; 0 = the planar mirror; at most half of it)",
-         apply_sagitta, kRender | kWindow | kCurvedReport, "0.1"},
+         apply_sagitta, kRender | kWindow | kCurvedReport, "0.1", slider(0.0f, 10.0f, false, true)},
         {"--cap", "C", "curved effect: sphere (default) | cylinder (axis along the mirror's\nsecond side)",
-         apply_cap, kRender | kWindow | kCurvedReport, "cylinder"},
+         apply_cap, kRender | kWindow | kCurvedReport, "cylinder", choice("sphere|cylinder")},
         {"--lens-grid", "N", "lens effect: N x N tiles, 1..128 (default 16, at most one per pixel)",
-         apply_lens_grid, kRender | kWindow, "8"},
-        {"--lens-power", "P", "lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens; stronger powers make tiles degenerate in single precision)", apply_lens_power, kRender | kWindow | kLensReport, "1.5"},
+         apply_lens_grid, kRender | kWindow, "8", slider(1, kMaxLensGrid, true)},
+        {"--lens-power", "P", "lens effect: p of eq. 34, in (0, 2] (default 2; 1 = no lens; stronger powers make tiles degenerate in single precision)", apply_lens_power, kRender | kWindow | kLensReport, "1.5",
+         slider(0.0f, kMaxLensPower)},
         {"--lens-center", "x,y",
          "lens effect: the lens centre in the frame, each in [-1, 1] (default:\n"
          "the scene's lens node, else the model's centre as seen)",
-         apply_lens_center, kRender | kWindow, "0.1,-0.2"},
+         apply_lens_center, kRender | kWindow, "0.1,-0.2", slider(-1.0f, 1.0f, false, false, 2)},
         {"--lens-radius", "R",
          "lens effect: the lens radius as a fraction of the frame's half height,\n"
          "(0, 1] (default: the lens node's, else half the model's as seen,\n"
          "within 0.1..0.4)",
-         apply_lens_radius, kRender | kWindow, "0.3"},
+         apply_lens_radius, kRender | kWindow, "0.3", slider(0.0f, 1.0f)},
         {"--slit", "M",
          "nonaffine effect: the slit's depth in front of the eye, (0, 1000] m,\n"
          "below --pivot (default a third of the pivot)",
-         apply_slit, kRender | kWindow, "2"},
+         apply_slit, kRender | kWindow, "2", slider(0.0f, kMaxDepthM, false, true)},
         {"--pivot", "M",
          "nonaffine effect: where the slit planes meet the camera's side planes,\n"
          "(0, 1000] m, below the far distance (default: the model centre's depth)",
-         apply_pivot, kRender | kWindow, "5"},
+         apply_pivot, kRender | kWindow, "5", slider(0.0f, kMaxDepthM, false, true)},
         // ---- Fog (render/fog_pass.hpp) ----
         {"--fog", nullptr,
          "plain and mirror effects: distance fog from the depth buffer, the\n"
@@ -279,30 +281,30 @@ const std::vector<EffectOption>& effect_options() {
          "colour, half fog one scene diagonal away)",
          apply_fog},
         {"--fog-density", "D", "fog per metre, (0, 1000] (implies --fog; default ln 2 / the scene's diagonal)",
-         apply_fog_density, kRender | kWindow, "0.05"},
+         apply_fog_density, kRender | kWindow, "0.05", slider(0.0f, 1000.0f, false, true)},
         {"--fog-color", "r,g,b", "the fog's sRGB colour, each in [0, 1] (implies --fog; default the sky)",
-         apply_fog_color, kRender | kWindow, "0.5,0.6,0.7"},
+         apply_fog_color, kRender | kWindow, "0.5,0.6,0.7", slider(0.0f, 1.0f, false, false, 3)},
         // ---- end of fog ----
         // ---- stereo ----
         {"--stereo", nullptr,
          "left and right eyes side by side, each its own camera pair, with its\n"
          "own mirror reflection, lens and tiles (each eye half the width)",
          apply_stereo},
-        {"--ipd-m", "M", "stereo: interpupillary distance, [0, 10] m (default 0.064)", apply_ipd, kRender | kWindow, "0.1"},
+        {"--ipd-m", "M", "stereo: interpupillary distance, [0, 10] m (default 0.064)", apply_ipd, kRender | kWindow, "0.1", slider(0.0f, kMaxIpdM, false, true)},
         {"--convergence-m", "M",
          "stereo: depth of the zero-disparity plane, (0, 1000] m beyond the near\n"
          "plane (default: the mirror's centre, else the model's centre)",
-         apply_convergence, kRender | kWindow, "4"},
+         apply_convergence, kRender | kWindow, "4", slider(0.0f, kMaxDepthM, false, true)},
         // ---- end of stereo ----
         // ---- portal and recursion effects (docs/portals.md) ----
         {"--recursion-depth", "N",
          "recursion effect: links passed through, 0..8 (default 4; 0 = the plain\n"
          "frame with the mirrors' or portal's own colours)",
-         apply_recursion_depth, kRender | kWindow, "2"},
+         apply_recursion_depth, kRender | kWindow, "2", slider(0, render::kMaxRecursionDepth, true)},
         {"--recursion-links", "L",
          "recursion effect: mirrors (two facing mirrors beside the model, default)\n"
          "| portals (a portal whose exit faces its entry)",
-         apply_recursion_links, kRender | kWindow, "portals"},
+         apply_recursion_links, kRender | kWindow, "portals", choice("mirrors|portals")},
         // ---- end of portal and recursion effects ----
     };
     return table;

@@ -60,6 +60,33 @@ struct EffectSettings {
     render::LinkSet recursion_links = render::LinkSet::Mirrors; // --recursion-links
 };
 
+// How the window's panel (demo/window_panel.hpp) edits a row with a value:
+// a slider per component over [low, high] (the row's own bounds; a value
+// the row refuses, e.g. an open end, shows the row's message in the
+// panel), or one of `choices`. Rows without a control (Kind::None) are not
+// in the panel; flags (value nullptr) are checkboxes.
+struct PanelControl {
+    enum class Kind { None, Slider, Choice, SceneCamera } kind = Kind::None; // SceneCamera: the scene's cameras
+    float low = 0.0f, high = 0.0f;
+    bool whole = false;        // whole numbers
+    bool logarithmic = false;  // a slider whose range spans decades
+    int components = 1;        // "NxM": 2 with separator 'x'; "x,y": 2 with ','
+    char separator = ',';
+    const char* choices = nullptr; // Kind::Choice: "oblique|rectangle|reflect_only"
+};
+
+// A slider over [low, high]; a choice among "a|b|c"; one of the scene's cameras.
+constexpr PanelControl slider(float low, float high, bool whole = false, bool logarithmic = false,
+                              int components = 1, char separator = ',') {
+    return {PanelControl::Kind::Slider, low, high, whole, logarithmic, components, separator, nullptr};
+}
+constexpr PanelControl choice(const char* choices) {
+    return {PanelControl::Kind::Choice, 0.0f, 0.0f, false, false, 1, ',', choices};
+}
+constexpr PanelControl scene_camera() {
+    return {PanelControl::Kind::SceneCamera, 0.0f, 0.0f, false, false, 1, ',', nullptr};
+}
+
 struct EffectOption {
     const char* name;  // "--slit"
     const char* value; // "M" for the help line; nullptr: a flag without a value
@@ -68,6 +95,7 @@ struct EffectOption {
     std::optional<Failure> (*apply)(EffectSettings& settings, const std::string& value);
     unsigned commands = kRender | kWindow; // Command bits
     const char* example = nullptr;         // a value the row accepts (tests/cli/demo_options_test.cpp)
+    PanelControl control = {};             // the window panel's widget
 };
 
 const std::vector<EffectOption>& effect_options();

@@ -120,6 +120,18 @@ std::optional<Failure> whole_number(int& slot, const char* name, const std::stri
     return std::nullopt;
 }
 
+// "plain|mirror|..." (render::kAllEffects): the panel's choices for --effect.
+const char* effect_choices() {
+    static const std::string names = [] {
+        std::string text = effect_names();
+        for (std::size_t at = text.find(", "); at != std::string::npos; at = text.find(", ", at)) {
+            text.replace(at, 2, "|");
+        }
+        return text;
+    }();
+    return names.c_str();
+}
+
 std::vector<Option> session_rows() {
     const Apply scene = [](Settings& s, const std::string& v) -> std::optional<Failure> {
         s.scene_path = v;
@@ -192,11 +204,11 @@ std::vector<Option> session_rows() {
         {"--camera", "NAME|INDEX",
          "camera by name (glTF camera, else its node) or index;\n"
          "default \"main\", else camera 0, else one framing the scene",
-         camera, kEveryCommand, "main", false},
+         camera, kEveryCommand, "main", false, scene_camera()},
         {"--effect", "E", "plain | mirror | tiles | frustum | curved | lens | nonaffine |\nall (default all)", effects,
          kRender, "tiles", false},
         {"--effect", "E", "first effect: " + effect_names() + " (default plain)", first_effect, kWindow, "tiles",
-         false},
+         false, choice(effect_choices())},
         {"--size", "WxH", "image size in pixels, 1..8192 each (default 640x360)", apply_size, kRender | kReports,
          "64x48", false},
         {"--size", "WxH", "window size, 1..8192 each (default 960x540)", apply_size, kWindow, "64x48", false},
@@ -210,7 +222,7 @@ std::vector<Option> session_rows() {
         {"--msaa", "N",
          "multisampled anti-aliasing with N samples per pixel, 1 = off\n"
          "(default 4, or the most the context offers when fewer)",
-         msaa, kRender | kWindow, "2", false},
+         msaa, kRender | kWindow, "2", false, slider(1, kMaxMsaaOption, true)},
         {"--out", "DIR", "output folder, created if missing (default out)", out, kOffscreen, "out", false},
         {"--verbose", nullptr, "print the GL context and its KHR_debug messages", verbose, kEveryCommand, nullptr,
          false},
@@ -233,6 +245,12 @@ std::vector<Option> window_rows() {
         {"--inset", nullptr, "start with the frustum view inset shown (key F)",
          [](Settings& s, const std::string&) -> std::optional<Failure> {
              s.inset = true;
+             return std::nullopt;
+         },
+         kWindow, nullptr, false},
+        {"--panel", nullptr, "start with the control panel shown (key P)",
+         [](Settings& s, const std::string&) -> std::optional<Failure> {
+             s.panel = true;
              return std::nullopt;
          },
          kWindow, nullptr, false},
@@ -357,7 +375,7 @@ const std::vector<Option>& options() {
             rows.insert(rows.end(), more.begin(), more.end());
         }
         for (const EffectOption& e : effect_options()) {
-            rows.push_back({e.name, e.value, e.help, e.apply, e.commands, e.example, true});
+            rows.push_back({e.name, e.value, e.help, e.apply, e.commands, e.example, true, e.control});
         }
         return rows;
     }();

@@ -49,6 +49,7 @@ struct Settings : EffectSettings {
     // window.
     bool inset = false;                    // --inset: start with the frustum view inset shown
     bool help_overlay = false;             // --help-overlay: start with the key help shown
+    bool panel = false;                    // --panel: start with the control panel shown
     std::optional<int> frames;             // --frames: draw this many frames, then exit
     std::optional<std::string> screenshot; // --screenshot: with frames, the last frame as PNG
     std::vector<gl::KeyPressed> keys;      // --keys: pressed one per frame, from the first frame on
@@ -73,6 +74,7 @@ struct Option {
     unsigned commands;                // the Command bits that accept the option
     const char* example;              // a value the row accepts; nullptr for a flag
     bool effect_row;                  // from effect_options(): listed under "effect options"
+    PanelControl control = {};        // the window panel's widget (demo/effect_options.hpp)
 };
 
 // Every row, the effect section last. A name appears in several rows only

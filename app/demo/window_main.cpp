@@ -18,7 +18,7 @@ int window_main(const std::vector<std::string>& args) {
         return 0;
     }
     const auto note = [](std::string_view line) { std::cerr << "frustum-demo window: " << line << '\n'; };
-    const auto outcome = run_window(std::get<WindowRequest>(parsed), note);
+    const auto outcome = run_window(std::get<WindowRequest>(parsed), args, note);
     if (const auto* failure = std::get_if<Failure>(&outcome)) {
         std::cerr << "frustum-demo window: error: " << failure->message << '\n';
         return static_cast<int>(failure->status);

@@ -1,6 +1,7 @@
 #include "demo/window_run.hpp"
 
 #include "demo/run_render.hpp"
+#include "demo/window_panel.hpp"
 
 #include <gl/functions.hpp>
 #include <gl/glfw_egl_window.hpp>
@@ -13,8 +14,13 @@
 #include <window/frame.hpp>
 #include <window/frame_clock.hpp>
 #include <window/frame_painter.hpp>
+#include <window/gpu_timer.hpp>
+#include <window/imgui_layer.hpp>
+#include <window/live_numbers.hpp>
 #include <window/mirror_pose.hpp>
 #include <window/orbit_camera.hpp>
+
+#include <imgui.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,12 +30,19 @@
 namespace demo {
 namespace {
 
+// The window's [ and ] keys stop at --lens-power's bound.
+// The panel's screenshot button without --screenshot writes here (the current folder).
+constexpr const char* kPanelScreenshot = "frustum-window.png";
+
+static_assert(window::kMaxLensPower == kMaxLensPower, "window lens power keys and --lens-power disagree");
 
 // Everything one frame loop needs, made once: the session (demo/session.hpp)
 // with the window as its context, and the painter, which dies before them.
 struct WindowSession : Session {
     gl::GlfwEglWindow* window = nullptr; // the session's context
     std::optional<window::FramePainter> painter;
+    std::unique_ptr<window::ImGuiLayer> imgui; // the panel and the key help
+    std::optional<window::GpuTimer> timer;
     EffectSetup effects; // the effect options, with what they leave unset derived from the scene
 };
 
@@ -72,19 +85,33 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
         return runtime(painter.error());
     }
     session->painter.emplace(std::move(*painter));
+    auto imgui = window::ImGuiLayer::create(*session->fn);
+    if (!imgui) {
+        return runtime(imgui.error());
+    }
+    session->imgui = std::move(*imgui);
+    session->timer.emplace(*session->window, *session->fn);
     return session;
+}
+
+// The settings the viewer state holds (the keys change them afterwards):
+// at start-up, and again for each change made in the panel.
+void take_settings(const Settings& settings, window::ViewerState& state) {
+    state.effect = settings.effects.front();
+    state.tile_columns = settings.tile_columns;
+    state.tile_rows = settings.tile_rows;
+    state.mirror_method = settings.mirror;
+    state.lens_power = settings.lens_power; // [ and ] change it
+    state.recursion_depth = settings.recursion_depth;
+    state.msaa_samples = settings.msaa_samples;
 }
 
 window::ViewerState initial_state(const WindowRequest& request) {
     window::ViewerState state;
-    state.effect = request.effects.front();
-    state.tile_columns = request.tile_columns;
-    state.tile_rows = request.tile_rows;
-    state.mirror_method = request.mirror;
-    state.lens_power = request.lens_power; // --lens-power: the start; [ and ] change it
+    take_settings(request, state);
     state.show_help = request.help_overlay;
+    state.show_panel = request.panel;
     state.show_inset = request.inset;
-    state.msaa_samples = request.msaa_samples;
     return state;
 }
 
@@ -104,22 +131,93 @@ void apply_effect_settings(const EffectSetup& setup, window::Frame& frame, int w
     o.fit = setup.options.fit;
     o.tile_borders = setup.options.tile_borders;
     o.fog = setup.options.fog; // --fog (the plain and mirror effects)
+    o.recursion_links = setup.options.recursion_links;
     o.lens_grid = std::min(setup.options.lens_grid, std::min(width_px, height_px));
+}
+
+// Settings from the panel: the keys' fields into the viewer state, the
+// effect options set up anew (the mirror stays where start-up placed it).
+void apply_panel_settings(const Settings& settings, WindowSession& s, window::ViewerState& state,
+                          const Reporter& reporter) {
+    take_settings(settings, state);
+    Settings unplaced = settings;
+    unplaced.mirror_place = {};
+    s.effects = setup_effects(s.scene, unplaced, reporter);
+}
+
+// The key help (and why an effect was not drawn): frame.text as an ImGui
+// window, "keys\taction" lines as a table, beside the panel when it is shown.
+void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
+    // At most 70% of the width (the long lines wrap) and a smaller font in small windows.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float left_px = beside_panel ? kPanelWidthPx + 8.0f : 8.0f;
+    const float width_px = std::max(120.0f, std::min(0.7f * display.x, display.x - left_px - 8.0f));
+    ImGui::SetNextWindowPos(ImVec2(left_px, 8.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width_px, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("keys (H hides)", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
+    ImGui::SetWindowFontScale(display.y < 600.0f ? 0.8f : 1.0f);
+    bool table = false;
+    for (const std::string& line : lines) {
+        const std::size_t tab = line.find('\t');
+        if (tab == std::string::npos) {
+            if (table) {
+                ImGui::EndTable();
+                table = false;
+            }
+            ImGui::TextWrapped("%s", line.c_str());
+            continue;
+        }
+        if (!table) {
+            table = ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingStretchProp);
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        }
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextUnformatted(line.substr(0, tab).c_str());
+        ImGui::TableSetColumnIndex(1);
+        ImGui::TextWrapped("%s", line.substr(tab + 1).c_str());
+    }
+    if (table) {
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+// The mirror's screen rectangle (bottom-left pixels) as an outline, under the panel.
+void outline(const render::PixelRect& rect, int height_px) {
+    const float top = static_cast<float>(height_px - rect.y - rect.height);
+    ImGui::GetBackgroundDrawList()->AddRect(
+        ImVec2(static_cast<float>(rect.x), top),
+        ImVec2(static_cast<float>(rect.x + rect.width), top + static_cast<float>(rect.height)),
+        IM_COL32(255, 220, 40, 255), 0.0f, 0, 2.0f);
 }
 
 } // namespace
 
-std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
+std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const std::vector<std::string>& args,
                                             const std::function<void(std::string_view)>& note) {
     auto opened = open_session(request, note);
     if (auto* failure = std::get_if<Failure>(&opened)) {
         return *failure;
     }
     WindowSession& s = *std::get<std::unique_ptr<WindowSession>>(opened);
+    const Reporter reporter{note, note};
     const std::vector<int> attachments = window::mirror_attachments(s.scene);
-    const window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
-    window::Controls controls(window::control_scene(s.scene));
+    window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
+    std::vector<std::string> camera_names; // --camera in the panel: a name, else the index
+    for (std::size_t i = 0; i < s.scene.cameras.size(); ++i) {
+        const std::string& name = s.scene.cameras[i].name;
+        camera_names.push_back(name.empty() ? std::to_string(i) : name);
+    }
+    const window::ControlScene control_scene = window::control_scene(s.scene);
+    window::Controls controls(control_scene);
     window::ViewerState state = initial_state(request);
+    Settings settings = request; // what the panel last applied
+    WindowPanel panel(args, request);
     window::MirrorPose applied_pose;
     window::FrameClock clock;
     std::optional<double> frame_ms;
@@ -130,6 +228,8 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
     render::Effect shown_effect = state.effect; // the last effect drawn
     std::optional<std::string> notice;          // why an effect was refused, in the overlay
     std::size_t keys_pressed = 0;               // of request.keys, one per pass of the loop
+    bool screenshot_asked = false;              // the panel's button, saved at the next frame
+    auto last_frame = std::chrono::steady_clock::now();
 
     while (!s.window->should_close()) {
         const bool minimized = size.width_px < 1 || size.height_px < 1;
@@ -147,8 +247,10 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
         if (size.width_px < 1 || size.height_px < 1) {
             continue;
         }
+        // The panel takes the mouse while the pointer is over it.
+        events = s.imgui->feed(std::move(events), state.show_panel);
         // Stereo: cameras, frame and options are one eye's, half the width.
-        const int eye_width_px = request.stereo ? std::max(1, size.width_px / 2) : size.width_px;
+        const int eye_width_px = settings.stereo ? std::max(1, size.width_px / 2) : size.width_px;
         if (!cameras) {
             auto made = render::make_cameras(s.scene, s.camera_index, eye_width_px, size.height_px);
             if (!made) {
@@ -176,13 +278,21 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
             return runtime(frame.error());
         }
         apply_effect_settings(s.effects, *frame, eye_width_px, size.height_px);
-        frame->stereo = stereo_rig(request, frame->cameras.main.pair, s.scene);
-        if (notice) {
+        frame->stereo = stereo_rig(settings, frame->cameras.main.pair, s.scene);
+        if (notice && !state.show_panel) {
             frame->text.insert(frame->text.begin(), *notice);
         }
+        // The help goes into an ImGui window (below), not the painter's text panel.
+        const std::vector<std::string> help = std::move(frame->text);
+        frame->text.clear();
+        const auto paint_start = std::chrono::steady_clock::now();
+        s.timer->begin();
         frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
                                       ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
                                       : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
+        s.timer->end();
+        const double paint_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - paint_start).count();
         if (!painted) {
             // Not for this scene or camera: keep the previous effect (plain
             // when that one fails now too, then no inset), say why, go on.
@@ -206,13 +316,72 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
             notice.reset(); // a new effect was drawn: the old reason no longer applies
         }
         shown_effect = state.effect;
+        // The panel and the help over the frame (nothing at all when both are hidden).
+        if (state.show_panel || !help.empty()) {
+            const auto now = std::chrono::steady_clock::now();
+            s.imgui->begin_frame(size.width_px, size.height_px,
+                                 std::chrono::duration<double>(now - last_frame).count());
+            last_frame = now;
+            if (!help.empty()) {
+                draw_help(help, state.show_panel);
+            }
+            if (state.show_panel) {
+                const window::LiveNumbers numbers = window::live_numbers(*frame, s.scene);
+                PanelView view;
+                view.numbers = &numbers;
+                view.gpu_ms = s.timer->last_ms();
+                view.gpu_timer_available = s.timer->available();
+                view.paint_cpu_ms = paint_ms;
+                view.notice = notice;
+                view.mirror_size_m = control_scene.mirror_size_m;
+                view.scene_radius_m = window::bounds_radius(s.scene.world_bounds);
+                view.camera_names = camera_names;
+                view.check = [&](const Settings& next) -> std::optional<std::string> {
+                    if (auto samples = gl::choose_samples(*s.fn, next.msaa_samples); !samples) {
+                        return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
+                    }
+                    return std::nullopt;
+                };
+                PanelOutcome outcome = panel.draw(state, view);
+                const bool mirror_shown = frame->effect == render::Effect::Mirror ||
+                                          frame->effect == render::Effect::Curved;
+                if (numbers.mirror_rect && mirror_shown && !frame->stereo) {
+                    outline(*numbers.mirror_rect, size.height_px);
+                }
+                if (outcome.settings) {
+                    if (outcome.settings->camera != settings.camera) {
+                        // Another scene camera: found as at start-up (render::find_camera), the orbit dropped.
+                        auto index = render::find_camera(s.scene, outcome.settings->camera);
+                        if (!index) {
+                            return runtime(index.error());
+                        }
+                        s.camera_index = *index;
+                        projection = window::orbit_projection(s.scene, s.camera_index);
+                        state.orbit.reset();
+                    }
+                    settings = std::move(*outcome.settings);
+                    apply_panel_settings(settings, s, state, reporter);
+                    cameras.reset(); // --stereo may have changed the eye's width
+                    notice.reset();
+                }
+                screenshot_asked = screenshot_asked || outcome.screenshot;
+            }
+            if (auto drawn = s.imgui->end_frame(); !drawn) {
+                return runtime(drawn.error());
+            }
+        }
         ++run.frames_drawn;
         const bool last = request.frames && run.frames_drawn >= *request.frames;
-        if (last && request.screenshot) {
-            if (auto saved = save_screenshot(*s.fn, size, *request.screenshot); !saved) {
+        if ((last && request.screenshot) || (screenshot_asked && !request.frames)) {
+            const std::string path = request.screenshot.value_or(kPanelScreenshot);
+            if (auto saved = save_screenshot(*s.fn, size, path); !saved) {
                 return runtime(saved.error());
             }
-            run.written_paths.push_back(*request.screenshot);
+            if (!last) {
+                note("screenshot: " + path);
+            }
+            run.written_paths.push_back(path);
+            screenshot_asked = false;
         }
         s.window->swap_buffers();
         if (auto mean = clock.tick(std::chrono::steady_clock::now()); mean || titled_effect != state.effect) {

@@ -24,7 +24,9 @@ struct WindowRun {
 // An effect that cannot be drawn for the current scene or camera does not
 // end the run: the previous effect stays on screen, the overlay says why,
 // and `note` gets the same line (as does the mirror placement).
-std::variant<WindowRun, Failure> run_window(const WindowRequest& request,
+// `args`: the command line `request` was parsed from (args[0] "window"),
+// what the control panel edits.
+std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const std::vector<std::string>& args,
                                             const std::function<void(std::string_view)>& note);
 
 } // namespace demo

@@ -75,13 +75,17 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
                     std::move(groups));
 }
 
-frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, LinkSet set,
+frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, const RenderOptions& options,
                                                                  const frustum::MatrixPair<float>& camera) const {
+    const LinkSet set = options.recursion_links;
     const bool portal = effect == Effect::Portal;
     LinkGroup& group = link_groups_[portal ? 0 : set == LinkSet::Mirrors ? 1 : 2];
     auto placed = portal ? place_portal_pair(camera, bounds_) : place_facing_links(camera, bounds_, set);
     if (!placed) {
         return frustum::Error{placed.error()};
+    }
+    if (!portal) {
+        move_links(*placed, options.link_moves);
     }
     for (std::size_t i = 0; i < placed->size(); ++i) {
         ViewLink& link = (*placed)[i];
@@ -226,7 +230,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         return fog ? fog_pass_.apply(ctx, frame, cameras.main.pair, fog->params) : frustum::Status{};
     case Effect::Portal:
     case Effect::Recursion: {
-        auto group = link_group(effect, options.recursion_links, cameras.main.pair);
+        auto group = link_group(effect, options, cameras.main.pair);
         if (!group) {
             return frustum::Error{group.error()};
         }

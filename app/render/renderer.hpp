@@ -14,6 +14,7 @@
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
 #include "plan/scene_fit.hpp"
+#include "plan/link_moves.hpp"
 #include "plan/view_links.hpp"
 #include "plan/world_geometry.hpp"
 
@@ -49,6 +50,7 @@ struct RenderOptions {
     bool tile_borders = false;                         // tiles effect: draw each tile's border
     int recursion_depth = 4;                           // recursion effect: links passed through, 0..8
     LinkSet recursion_links = LinkSet::Mirrors;        // recursion effect: facing mirrors or a portal
+    std::vector<LinkMove> link_moves;                  // recursion effect: each link moved after placement
     Lighting lighting;
     // Plain and mirror effects: distance fog decoded from depth (fog_pass.hpp);
     // unset: none. The other effects are drawn without it.
@@ -126,7 +128,7 @@ private:
     // [0] portal pair, [1] facing mirrors, [2] facing portal. Mutable: the
     // links follow each frame's camera (placed by link_group()).
     mutable std::vector<LinkGroup> link_groups_;
-    frustum::Result<const LinkGroup*> link_group(Effect effect, LinkSet set,
+    frustum::Result<const LinkGroup*> link_group(Effect effect, const RenderOptions& options,
                                                  const frustum::MatrixPair<float>& camera) const;
     WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame
 };

@@ -17,6 +17,7 @@ constexpr float kDragPanFraction = 0.0015f;    // of the orbit distance, per cur
 constexpr float kZoomStep = 0.9f;              // distance factor per key press or wheel notch
 constexpr float kMirrorStepFraction = 0.05f;   // of the mirror's longer edge, per key press
 constexpr float kLensPowerStep = 1.25f;        // factor per key press
+constexpr float kLinkStepFraction = 0.02f;     // recursion mirrors: of the scene's radius, per key press
 constexpr float kMinDistanceFraction = 0.02f;  // orbit distance limits, of the scene radius
 constexpr float kMaxDistanceFraction = 10.0f;
 
@@ -104,11 +105,16 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
     if (press.key != gl::Key::Character) {
         return;
     }
+    if (link_key(press, state.link_moves)) {
+        return;
+    }
     const char c = press.character;
     if (c >= '1' && c <= '9' && static_cast<std::size_t>(c - '1') < effect_count()) {
         state.effect = render::kAllEffects[c - '1'];
     } else if (c == 'H' && !press.repeat) {
         state.show_help = !state.show_help;
+    } else if (c == 'P' && !press.repeat) {
+        state.show_panel = !state.show_panel;
     } else if (c == 'F' && !press.repeat) {
         state.show_inset = !state.show_inset;
     } else if (c == 'R') {
@@ -126,6 +132,24 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
     } else if (c == 'W' || c == 'A' || c == 'S' || c == 'D' || c == 'Q' || c == 'E') {
         camera_key(press, start_orbit(main_camera, state));
     }
+}
+
+// Z X: the left facing mirror out / in, C V: the right one; with Shift
+// they turn instead (5 degrees per press). A push step is 2% of the scene's
+// bounding radius.
+bool Controls::link_key(const gl::KeyPressed& press, std::vector<render::LinkMove>& moves) const {
+    const char c = press.character;
+    if ((c != 'Z' && c != 'X' && c != 'C' && c != 'V') || moves.size() < 2) {
+        return false;
+    }
+    render::LinkMove& move = moves[c == 'Z' || c == 'X' ? 0 : 1];
+    const float sign = c == 'X' || c == 'V' ? 1.0f : -1.0f;
+    if (press.mods.shift) {
+        move.turn_rad += sign * kKeyTurnRad;
+    } else {
+        move.push_m += sign * kLinkStepFraction * bounds_radius(scene_.bounds);
+    }
+    return true;
 }
 
 bool Controls::camera_key(const gl::KeyPressed& press, OrbitCamera& camera) const {

@@ -8,6 +8,7 @@
 #include <frustum/matrix_pair.hpp>
 #include <gl/window_input.hpp>
 #include <plan/effect.hpp>
+#include <plan/link_moves.hpp>
 #include <plan/view_tree.hpp>
 #include <scene/scene.hpp>
 
@@ -21,10 +22,11 @@
 namespace window {
 
 inline constexpr int kMaxTiles = 16; // per direction
-// Lens power (paper eq. 34's p) stays within [kMinLensPower, kMaxLensPower],
-// the range `frustum-demo render --lens-power` accepts up to.
+// Lens power (paper eq. 34's p) stays within [kMinLensPower, kMaxLensPower]:
+// the upper end is --lens-power's bound (demo::kMaxLensPower, asserted
+// equal where both are seen, app/demo/window_run.cpp).
 inline constexpr float kMinLensPower = 0.25f;
-inline constexpr float kMaxLensPower = 8.0f;
+inline constexpr float kMaxLensPower = 2.0f;
 
 // What the window shows; Controls::apply() changes it.
 struct ViewerState {
@@ -38,7 +40,11 @@ struct ViewerState {
     int tile_rows = 2;
     float lens_power = 2.0f; // lens effect; > 1 magnifies
     int recursion_depth = 4; // recursion effect: levels, 0..render::kMaxRecursionDepth (keys , .)
+    // Recursion effect: the left [0] and right [1] facing mirror, each moved
+    // on its own (keys Z X, C V; with Shift turned) after the frame places them.
+    std::vector<render::LinkMove> link_moves = std::vector<render::LinkMove>(2);
     bool show_help = false;
+    bool show_panel = false; // the control panel (key P; --panel starts with it)
     bool show_inset = false; // the frustum view in a corner
     int msaa_samples = 0;    // gl::choose_samples(): 0 = 4 or the context's maximum, 1 = off
     bool quit = false;
@@ -64,6 +70,7 @@ private:
     void key(const gl::KeyPressed& press, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
     bool camera_key(const gl::KeyPressed& press, OrbitCamera& orbit) const;
     bool mirror_key(const gl::KeyPressed& press, MirrorPose& pose) const;
+    bool link_key(const gl::KeyPressed& press, std::vector<render::LinkMove>& moves) const;
     OrbitCamera& start_orbit(const frustum::MatrixPair<float>& main_camera, ViewerState& state) const;
     void drag(const glm::dvec2& delta, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
 

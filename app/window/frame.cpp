@@ -32,6 +32,7 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     frame.options.tile_rows = std::min(state.tile_rows, height_px);
     frame.options.lens_power = state.lens_power;
     frame.options.recursion_depth = state.recursion_depth;
+    frame.options.link_moves = state.link_moves;
     frame.options.msaa_samples = state.msaa_samples;
     frame.inset = state.show_inset;
     if (state.show_help) {

@@ -30,7 +30,7 @@ struct Frame {
     std::vector<std::string> text; // help panel lines; empty: none
     // Set: cameras and options are one eye's (half the framebuffer's
     // width); the painter draws each eye's pair (plan/stereo.hpp) into
-    // its half, and no inset.
+    // its half, and the inset over the right eye.
     std::optional<render::StereoRig> stereo;
 };
 

@@ -69,6 +69,9 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
         if (auto status = paint_stereo(renderer, frame, width_px, height_px); !status) {
             return status;
         }
+        if (auto status = paint_inset(renderer, frame, width_px / 2, width_px / 2, height_px); !status) {
+            return status; // the inset over the right eye
+        }
         return draw_text(renderer, frame, width_px, height_px);
     }
     auto main = sized(frame_target_, width_px, height_px, frame.options.msaa_samples);
@@ -81,7 +84,16 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
     if (auto status = gl::blit_to_window(*fn_, **main, {0, 0, width_px, height_px}); !status) {
         return status;
     }
-    if (const auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
+    if (auto status = paint_inset(renderer, frame, 0, width_px, height_px); !status) {
+        return status;
+    }
+    return draw_text(renderer, frame, width_px, height_px);
+}
+
+frustum::Status FramePainter::paint_inset(const render::Renderer& renderer, const Frame& frame, int x_px,
+                                          int width_px, int height_px) {
+    if (auto rect = inset_rect(width_px, height_px); frame.inset && rect) {
+        rect->x += x_px;
         auto inset = sized(inset_target_, rect->width, rect->height, frame.options.msaa_samples);
         if (!inset) {
             return inset.take_error();
@@ -97,7 +109,7 @@ frustum::Status FramePainter::paint(const render::Renderer& renderer, const Fram
             return status;
         }
     }
-    return draw_text(renderer, frame, width_px, height_px);
+    return {};
 }
 
 frustum::Status FramePainter::draw_text(const render::Renderer& renderer, const Frame& frame, int width_px,

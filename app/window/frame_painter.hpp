@@ -1,9 +1,11 @@
 // Draws a window::Frame into the window's framebuffer 0 with the same
 // renderer as `frustum-demo render`: the effect is rendered into an
 // offscreen target of the framebuffer's size (render::Renderer::render_into)
-// and blitted; the inset likewise at its own size into a corner; then the
-// help panel on top. Stereo frames: each eye rendered and blitted into its
-// half (left eye left), no inset.
+// and blitted; the inset likewise at its own size into a corner. Stereo
+// frames: each eye rendered and blitted into its half (left eye left), the
+// inset over the right eye. Then frame.text, when it has lines, as the help
+// panel on top (the web page's; the desktop window shows its help and
+// control panel with window::ImGuiLayer instead and leaves frame.text empty).
 #pragma once
 
 #include "window/frame.hpp"
@@ -35,6 +37,11 @@ private:
 
     // frame.stereo: each eye into its half of framebuffer 0 (eye_target_ reused).
     frustum::Status paint_stereo(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);
+
+    // frame.inset: the inset effect from frame.cameras into the top-right
+    // corner of the width_px x height_px part of framebuffer 0 from x_px on.
+    frustum::Status paint_inset(const render::Renderer& renderer, const Frame& frame, int x_px, int width_px,
+                                int height_px);
 
     // The help panel on top of framebuffer 0, when frame.text has lines.
     frustum::Status draw_text(const render::Renderer& renderer, const Frame& frame, int width_px, int height_px);

@@ -1,19 +1,10 @@
 #include "window/key_help.hpp"
 
-#include <cstdio>
+#include <plan/number_text.hpp>
+
 #include <iterator>
 
 namespace window {
-namespace {
-
-// "2", "2.5", "1.28": up to three significant digits.
-std::string power_text(float power) {
-    char text[16];
-    std::snprintf(text, sizeof text, "%.3g", static_cast<double>(power));
-    return text;
-}
-
-} // namespace
 
 std::vector<KeyHelp> key_help() {
     const std::size_t count = std::size(render::kAllEffects);
@@ -37,7 +28,10 @@ std::vector<KeyHelp> key_help() {
         {"+ -", "more / fewer tiles"},
         {"[ ]", "lens power down / up (lens effect)"},
         {", .", "recursion depth down / up, 0..8 (recursion effect)"},
+        {"Z X, C V", "left, right facing mirror out / in (recursion effect)"},
+        {"Shift+Z X, C V", "turn the left, right facing mirror (recursion effect)"},
         {"F", "frustum view inset on / off"},
+        {"P", "control panel on / off (options, mirror placement, numbers)"},
         {"H", "this help on / off"},
         {"Esc", "quit"},
     };
@@ -48,7 +42,7 @@ std::vector<std::string> help_lines(const ViewerState& state) {
     lines.push_back("effect " + std::string(render::to_string(state.effect)) + "   tiles " +
                     std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows) + "   mirror camera " +
                     std::string(render::to_string(state.mirror_method)) + "   lens power " +
-                    power_text(state.lens_power) + "   depth " + std::to_string(state.recursion_depth) +
+                    render::number_text(state.lens_power) + "   depth " + std::to_string(state.recursion_depth) +
                     (state.orbit ? "   camera: orbit" : "   camera: scene"));
     lines.emplace_back();
     for (const KeyHelp& entry : key_help()) {

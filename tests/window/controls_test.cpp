@@ -1,12 +1,15 @@
 // Input events -> ViewerState, driven without a window.
-#include "showcase.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
+#include <demo/effect_options.hpp>
+#include <plan/link_moves.hpp>
 #include <window/controls.hpp>
 #include <window/frame.hpp>
 #include <window/key_help.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -29,8 +32,8 @@ gl::KeyPressed key(gl::Key k, bool shift = false) {
 }
 
 struct Rig {
-    render::Cameras cameras = window_test::showcase_cameras();
-    window::Controls controls{window::control_scene(window_test::showcase())};
+    render::Cameras cameras = render_test::showcase_cameras();
+    window::Controls controls{window::control_scene(render_test::showcase())};
     window::ViewerState state;
 
     void send(const gl::InputEvent& event) { controls.apply(event, cameras.main.pair, state); }
@@ -82,7 +85,7 @@ TEST_CASE("the camera stays the scene's until the first camera input, and R brin
 
     rig.send(character('D'));
     REQUIRE(rig.state.orbit);
-    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, window_test::showcase().world_bounds);
+    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, render_test::showcase().world_bounds);
     CHECK(rig.state.orbit->yaw_rad == doctest::Approx(start.yaw_rad + 0.0872664626f));
     rig.send(character('R'));
     CHECK_FALSE(rig.state.orbit);
@@ -90,7 +93,7 @@ TEST_CASE("the camera stays the scene's until the first camera input, and R brin
 
 TEST_CASE("left drag orbits, right drag and Shift + left drag pan, the wheel zooms") {
     Rig rig;
-    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, window_test::showcase().world_bounds);
+    const window::OrbitCamera start = window::orbit_from_pair(rig.cameras.main.pair, render_test::showcase().world_bounds);
     rig.send(gl::CursorMoved{10.0, 10.0});
     rig.send(gl::MouseButtonChanged{gl::MouseButton::Left, true, {}});
     rig.send(gl::CursorMoved{20.0, 10.0});
@@ -138,7 +141,7 @@ TEST_CASE("arrows turn, tilt, slide and push the mirror; M puts it back") {
 TEST_CASE("without a mirror the arrows do nothing") {
     window::Controls controls{window::ControlScene{}};
     window::ViewerState state;
-    controls.apply(key(gl::Key::Left), window_test::showcase_cameras().main.pair, state);
+    controls.apply(key(gl::Key::Left), render_test::showcase_cameras().main.pair, state);
     CHECK(state.mirror == window::MirrorPose{});
 }
 
@@ -164,18 +167,19 @@ TEST_CASE("+ and - grow and shrink the tile grid within 1..16") {
     CHECK(rig.state.tile_rows == 2);
 }
 
-TEST_CASE("[ and ] change the lens power by 1.25 within [0.25, 8]") {
+TEST_CASE("[ and ] change the lens power by 1.25 within [0.25, 2], --lens-power's bound") {
     Rig rig;
     rig.send(character(']'));
-    CHECK(rig.state.lens_power == doctest::Approx(2.5f));
+    CHECK(rig.state.lens_power == doctest::Approx(2.0f)); // starts at 2, the bound
     rig.send(character('['));
     rig.send(character('['));
-    CHECK(rig.state.lens_power == doctest::Approx(1.6f));
-    CHECK(window::next_lens_power(7.0f, 1) == doctest::Approx(window::kMaxLensPower));
+    CHECK(rig.state.lens_power == doctest::Approx(1.28f));
+    CHECK(window::next_lens_power(1.9f, 1) == doctest::Approx(window::kMaxLensPower));
+    CHECK(window::kMaxLensPower == demo::kMaxLensPower);
     CHECK(window::next_lens_power(0.3f, -1) == doctest::Approx(window::kMinLensPower));
     const auto frame = window::make_frame(rig.state, rig.cameras, {}, scene::Bounds{}, 256, 144);
     REQUIRE_MESSAGE(frame.ok(), frame.error());
-    CHECK(frame->options.lens_power == doctest::Approx(1.6f));
+    CHECK(frame->options.lens_power == doctest::Approx(1.28f));
 }
 
 TEST_CASE(", and . change the recursion depth within 0..8") {
@@ -215,6 +219,47 @@ TEST_CASE("the help lists every effect, and docs/window.md lists every key") {
         CAPTURE(entry.keys);
         CHECK(docs.str().find("| " + entry.keys + " | " + entry.action + " |") != std::string::npos);
     }
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("window") {
+
+TEST_CASE("Z X and C V move the recursion's two facing mirrors, each on its own; with Shift they turn") {
+    Rig rig;
+    const float step_m = 0.02f * window::bounds_radius(render_test::showcase().world_bounds);
+    rig.send(character('Z'));
+    rig.send(character('Z'));
+    rig.send(character('V', true));
+    CHECK(rig.state.link_moves[0].push_m == doctest::Approx(-2.0f * step_m));
+    CHECK(rig.state.link_moves[0].turn_rad == 0.0f);
+    CHECK(rig.state.link_moves[1].push_m == 0.0f);
+    CHECK(rig.state.link_moves[1].turn_rad == doctest::Approx(0.0872664626f));
+    rig.send(character('X'));
+    rig.send(character('C'));
+    CHECK(rig.state.link_moves[0].push_m == doctest::Approx(-step_m));
+    CHECK(rig.state.link_moves[1].push_m == doctest::Approx(-step_m));
+    CHECK_FALSE(rig.state.orbit); // not camera keys
+    const auto frame = window::make_frame(rig.state, rig.cameras, {}, scene::Bounds{}, 256, 144);
+    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    REQUIRE(frame->options.link_moves.size() == 2);
+    CHECK(frame->options.link_moves[0] == rig.state.link_moves[0]);
+    CHECK(frame->options.link_moves[1] == rig.state.link_moves[1]);
+}
+
+TEST_CASE("move_links: a push slides the mirror along its normal, a turn keeps its frame orthonormal") {
+    const auto placed = render::place_facing_links(render_test::showcase_cameras().main.pair,
+                                                   render_test::showcase().world_bounds, render::LinkSet::Mirrors);
+    REQUIRE_MESSAGE(placed.ok(), placed.error());
+    std::vector<render::ViewLink> links = *placed;
+    render::move_links(links, {{0.5f, 0.0f}, {0.0f, 0.3f}});
+    const glm::vec3 moved = links[0].entry.origin - (*placed)[0].entry.origin;
+    CHECK(glm::length(moved - 0.5f * (*placed)[0].entry.normal()) < 1e-5f);
+    const render::ViewLink& turned = links[1];
+    CHECK(glm::length(turned.entry.origin - (*placed)[1].entry.origin) < 1e-5f); // about its centre
+    CHECK(std::abs(glm::length(turned.entry.x) - 1.0f) < 1e-6f);
+    CHECK(std::abs(glm::dot(turned.entry.x, turned.entry.y)) < 1e-6f);
+    CHECK(glm::dot(turned.entry.normal(), (*placed)[1].entry.normal()) == doctest::Approx(std::cos(0.3f)));
 }
 
 } // TEST_SUITE

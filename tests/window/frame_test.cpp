@@ -1,6 +1,6 @@
 // One frame as data: the untouched camera is the scene's pair exactly, tile
 // counts are capped, the inset's place; make_cameras keeps the aspect.
-#include "showcase.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,8 +19,8 @@ bool same(const frustum::MatrixPair<float>& a, const frustum::MatrixPair<float>&
 TEST_SUITE("window") {
 
 TEST_CASE("with no camera input the frame uses the scene's main camera pair exactly") {
-    const scene::Scene& scene = window_test::showcase();
-    const render::Cameras cameras = window_test::showcase_cameras();
+    const scene::Scene& scene = render_test::showcase();
+    const render::Cameras cameras = render_test::showcase_cameras();
     window::ViewerState state;
     const auto frame = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
     REQUIRE_MESSAGE(frame.ok(), frame.error());
@@ -40,7 +40,7 @@ TEST_CASE("tile counts are capped at one pixel per tile") {
     window::ViewerState state;
     state.tile_columns = 16;
     state.tile_rows = 16;
-    const auto frame = window::make_frame(state, window_test::showcase_cameras(), {}, scene::Bounds{}, 10, 4);
+    const auto frame = window::make_frame(state, render_test::showcase_cameras(), {}, scene::Bounds{}, 10, 4);
     REQUIRE_MESSAGE(frame.ok(), frame.error());
     CHECK(frame->options.tile_columns == 10);
     CHECK(frame->options.tile_rows == 4);
@@ -60,8 +60,8 @@ TEST_CASE("the inset: a third of the width, top-right, the framebuffer's aspect"
 }
 
 TEST_CASE("make_cameras: a scene camera takes the image's aspect, so a square stays square") {
-    const scene::Scene& scene = window_test::showcase();
-    const int index = window_test::showcase_main_index();
+    const scene::Scene& scene = render_test::showcase();
+    const int index = *render::find_camera(render_test::showcase(), std::nullopt);
     // A square window: the main camera's 16:9 gives way, so a square in the
     // picture stays square: |m00| == |m11| for a symmetric perspective
     // (the view is rigid, so compare the scaled rows' lengths).

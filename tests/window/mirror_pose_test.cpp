@@ -1,5 +1,5 @@
 // The mirror's rigid motion and what moves with it.
-#include "showcase.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,7 +15,7 @@ glm::vec3 center(const scene::MirrorRect& m) { return m.corner + 0.5f * (m.a1 + 
 TEST_SUITE("window") {
 
 TEST_CASE("an unmoved pose is the identity motion") {
-    const scene::MirrorRect& mirror = *window_test::showcase().mirror;
+    const scene::MirrorRect& mirror = *render_test::showcase().mirror;
     const glm::mat4 motion = window::mirror_motion(mirror, window::MirrorPose{});
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) {
@@ -25,7 +25,7 @@ TEST_CASE("an unmoved pose is the identity motion") {
 }
 
 TEST_CASE("turning and tilting keep the centre; sliding and pushing move it along the turned axes") {
-    const scene::MirrorRect& mirror = *window_test::showcase().mirror;
+    const scene::MirrorRect& mirror = *render_test::showcase().mirror;
     window::MirrorPose pose;
     pose.turn_rad = 0.3f;
     pose.tilt_rad = -0.2f;
@@ -56,7 +56,7 @@ TEST_CASE("render::check_rigid_motion names what is wrong") {
 }
 
 TEST_CASE("the showcase's backing board moves with its mirror, nothing else does") {
-    const scene::Scene& scene = window_test::showcase();
+    const scene::Scene& scene = render_test::showcase();
     const std::vector<int> attached = window::mirror_attachments(scene);
     REQUIRE(attached.size() == 1);
     CHECK(scene.instances[static_cast<std::size_t>(attached[0])].node_name == "mirror_backing");

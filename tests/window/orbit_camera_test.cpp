@@ -1,7 +1,7 @@
 // The orbit camera: it starts where the scene's camera is, and its pair is
 // look_at + perspective, so with the scene camera's own lens and no roll the
 // first orbit pair reproduces that camera.
-#include "showcase.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
@@ -29,8 +29,8 @@ float max_abs_difference(const glm::mat4& a, const glm::mat4& b) {
 TEST_SUITE("window") {
 
 TEST_CASE("orbit_from_pair starts at the camera's eye, looking its way") {
-    const render::Cameras cameras = window_test::showcase_cameras();
-    const window::OrbitCamera orbit = window::orbit_from_pair(cameras.main.pair, window_test::showcase().world_bounds);
+    const render::Cameras cameras = render_test::showcase_cameras();
+    const window::OrbitCamera orbit = window::orbit_from_pair(cameras.main.pair, render_test::showcase().world_bounds);
     // assets/README.md: main stands at (0.8, 1.7, 6.5) and looks at the mirror's centre (0, 1.05, -2).
     const glm::vec3 eye = orbit.eye();
     CHECK(eye.x == doctest::Approx(0.8f).epsilon(1e-4));
@@ -42,10 +42,10 @@ TEST_CASE("orbit_from_pair starts at the camera's eye, looking its way") {
 }
 
 TEST_CASE("the first orbit pair reproduces the scene camera (no roll, same lens)") {
-    const scene::Scene& scene = window_test::showcase();
-    const render::Cameras cameras = window_test::showcase_cameras();
+    const scene::Scene& scene = render_test::showcase();
+    const render::Cameras cameras = render_test::showcase_cameras();
     const window::OrbitCamera orbit = window::orbit_from_pair(cameras.main.pair, scene.world_bounds);
-    const window::OrbitProjection projection = window::orbit_projection(scene, window_test::showcase_main_index());
+    const window::OrbitProjection projection = window::orbit_projection(scene, *render::find_camera(render_test::showcase(), std::nullopt));
     CHECK(projection.yfov_rad == doctest::Approx(50.0 * 3.14159265358979 / 180.0).epsilon(1e-5));
     REQUIRE(projection.near_m);
     CHECK(*projection.near_m == doctest::Approx(0.1f));
@@ -92,7 +92,7 @@ TEST_CASE("without a perspective scene camera the orbit fits its depth range to 
     scene::Bounds bounds{glm::vec3(-1.0f), glm::vec3(1.0f)};
     window::OrbitCamera camera;
     camera.distance_m = 10.0f;
-    const window::OrbitProjection fitted = window::orbit_projection(window_test::showcase(), -1);
+    const window::OrbitProjection fitted = window::orbit_projection(render_test::showcase(), -1);
     CHECK_FALSE(fitted.near_m);
     const auto pair = window::orbit_pair(camera, fitted, 1.5f, bounds);
     REQUIRE_MESSAGE(pair.ok(), pair.error());

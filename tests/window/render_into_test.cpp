@@ -1,6 +1,6 @@
 // Renderer::render_into (what the window draws with) and move_mirror on an
 // offscreen context; skipped with the backend's error when there is none.
-#include "showcase.hpp"
+#include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
 
@@ -33,7 +33,7 @@ std::unique_ptr<Rig> make_rig() {
     auto fn = gl::Functions::load(*rig->context);
     REQUIRE_MESSAGE(fn.ok(), fn.error());
     rig->fn = std::make_unique<gl::Functions>(*fn);
-    auto renderer = render::Renderer::create(*rig->context, *rig->fn, window_test::showcase());
+    auto renderer = render::Renderer::create(*rig->context, *rig->fn, render_test::showcase());
     REQUIRE_MESSAGE(renderer.ok(), renderer.error());
     rig->renderer.emplace(std::move(*renderer));
     return rig;
@@ -48,7 +48,7 @@ render::RenderOptions options() {
 }
 
 image::Image render_image(const Rig& rig, render::Effect effect) {
-    auto picture = rig.renderer->render(effect, window_test::showcase_cameras(), options());
+    auto picture = rig.renderer->render(effect, render_test::showcase_cameras(), options());
     REQUIRE_MESSAGE(picture.ok(), picture.error());
     return std::move(*picture);
 }
@@ -74,7 +74,7 @@ TEST_CASE("render_into an existing target draws what render() returns") {
         CAPTURE(render::to_string(effect));
         // Twice into the same target: nothing of the previous frame survives.
         for (int pass = 0; pass < 2; ++pass) {
-            REQUIRE(rig->renderer->render_into(effect, window_test::showcase_cameras(), options(), *target).ok());
+            REQUIRE(rig->renderer->render_into(effect, render_test::showcase_cameras(), options(), *target).ok());
         }
         auto drawn = target->read_rgba8();
         REQUIRE_MESSAGE(drawn.ok(), drawn.error());
@@ -87,7 +87,7 @@ TEST_CASE("move_mirror moves the reflection, and the identity puts it back exact
     if (!rig) {
         return;
     }
-    const scene::Scene& scene = window_test::showcase();
+    const scene::Scene& scene = render_test::showcase();
     const image::Image before = render_image(*rig, render::Effect::Mirror);
     window::MirrorPose pose;
     pose.turn_rad = 0.26f;

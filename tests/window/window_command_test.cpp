@@ -3,12 +3,9 @@
 // --screenshot must match `frustum-demo render` of the same view: the
 // window draws with the same renderer into an offscreen target and blits it
 // 1:1, and with no input its camera is the scene's main camera exactly.
-//
-// Tolerance: RGB within 2 per channel on all but 0.5% of the pixels (alpha
-// is not compared: the window is opaque). With Mesa's llvmpipe behind both
-// the surfaceless and the X11 EGL display the images are bit-identical; the
-// slack is for drivers whose window and surfaceless paths differ.
+// Tolerances: shots.hpp.
 #include "process.hpp"
+#include "shots.hpp"
 
 #include <doctest/doctest.h>
 
@@ -24,66 +21,14 @@
 namespace {
 
 using window_test::Child;
+using window_test::check_similar;
+using window_test::crop;
+using window_test::kDemo;
+using window_test::kTolerance;
+using window_test::read;
+using window_test::render_offscreen;
+using window_test::run_window_under_xvfb;
 using window_test::TempDir;
-
-constexpr int kTolerance = 2;
-constexpr double kMaxFractionOver = 0.005;
-
-const std::string kDemo = FRUSTUM_DEMO_EXE;
-
-// The window command under xvfb-run; empty when xvfb-run is missing.
-std::optional<Child> run_window_under_xvfb(const std::vector<std::string>& options) {
-    static const std::string xvfb_run = window_test::find_on_path("xvfb-run");
-    if (xvfb_run.empty()) {
-        MESSAGE("skipping: xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
-        return std::nullopt;
-    }
-    std::vector<std::string> args{"-a", "-s", "-screen 0 1024x768x24", kDemo, "window"};
-    args.insert(args.end(), options.begin(), options.end());
-    return window_test::run(xvfb_run, args);
-}
-
-image::Image read(const std::filesystem::path& path) {
-    auto picture = image::read_png(path.string());
-    REQUIRE_MESSAGE(picture.ok(), picture.error());
-    return std::move(*picture);
-}
-
-// The offscreen renderer's image of `effect` at width x height.
-image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size,
-                              const std::vector<std::string>& more = {}) {
-    std::vector<std::string> args{"render", "--size", size, "--effect", effect, "--out", (dir / "render").string()};
-    args.insert(args.end(), more.begin(), more.end());
-    const Child child = window_test::run(kDemo, args);
-    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
-    return read(dir / "render" / (effect + ".png"));
-}
-
-image::Image opaque(image::Image picture) {
-    for (std::size_t alpha = 3; alpha < picture.rgba.size(); alpha += 4) {
-        picture.rgba[alpha] = 255;
-    }
-    return picture;
-}
-
-// The pixels of `picture` inside [x0, x1) x [y0, y1) (rows from the top).
-image::Image crop(const image::Image& picture, int x0, int y0, int x1, int y1) {
-    image::Image part = image::make_image(x1 - x0, y1 - y0, {0, 0, 0, 0});
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) {
-            image::set_pixel(part, x - x0, y - y0, image::pixel_at(picture, x, y));
-        }
-    }
-    return part;
-}
-
-void check_similar(const image::Image& window, const image::Image& offscreen, const std::string& what) {
-    const auto diff = image::compare(opaque(window), opaque(offscreen), kTolerance);
-    REQUIRE_MESSAGE(diff.ok(), diff.error());
-    INFO(what << ": " << diff->pixels_over << " of " << diff->pixel_count << " pixels differ by more than "
-              << kTolerance << ", max " << diff->max_abs);
-    CHECK(diff->fraction_over() <= kMaxFractionOver);
-}
 
 } // namespace
 

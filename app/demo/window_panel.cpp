@@ -1,0 +1,293 @@
+#include "demo/window_panel.hpp"
+
+#include <plan/number_text.hpp>
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace demo {
+namespace {
+
+constexpr float kMirrorTravel = 2.0f; // the slide and push sliders: this many mirror sizes either way
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t at = text.find(separator, start);
+        parts.push_back(text.substr(start, at - start));
+        if (at == std::string::npos) {
+            return parts;
+        }
+        start = at + 1;
+    }
+}
+
+std::string join(const float* values, int count, const PanelControl& control) {
+    std::string text;
+    for (int i = 0; i < count; ++i) {
+        text += (i ? std::string(1, control.separator) : std::string()) +
+                (control.whole ? std::to_string(static_cast<int>(std::lround(values[i])))
+                               : render::number_text(values[i]));
+    }
+    return text;
+}
+
+// The effect a row belongs to: its help line starts with "<effect> effect"
+// (effect_options.cpp's convention); empty for the others.
+std::optional<render::Effect> row_effect(const Option& option) {
+    for (const render::Effect effect : render::kAllEffects) {
+        const std::string prefix = std::string(render::to_string(effect)) + " effect";
+        if (option.help.compare(0, prefix.size(), prefix) == 0) {
+            return effect;
+        }
+    }
+    return std::nullopt;
+}
+
+void tooltip(const std::string& help) {
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s", help.c_str());
+    }
+}
+
+} // namespace
+
+void WindowPanel::follow(const window::ViewerState& state) {
+    // The first time, every followed row goes on the command line, so its widget shows the value.
+    const bool first = !followed_;
+    const auto keep = [&](const std::string& name, const std::string& value) {
+        line_.set(name, value);
+        accepted_.set(name, value); // the keys' changes are taken at once
+    };
+    followed_ = true;
+    if (first || current_.effects.empty() || state.effect != current_.effects.front()) {
+        keep("--effect", std::string(render::to_string(state.effect)));
+        current_.effects = {state.effect};
+    }
+    if (first || state.tile_columns != current_.tile_columns || state.tile_rows != current_.tile_rows) {
+        keep("--tiles", std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows));
+        current_.tile_columns = state.tile_columns;
+        current_.tile_rows = state.tile_rows;
+    }
+    if (first || state.mirror_method != current_.mirror) {
+        keep("--mirror", std::string(render::to_string(state.mirror_method)));
+        current_.mirror = state.mirror_method;
+    }
+    if (first || state.lens_power != current_.lens_power) {
+        keep("--lens-power", render::number_text(state.lens_power));
+        current_.lens_power = state.lens_power;
+    }
+    if (first || state.recursion_depth != current_.recursion_depth) {
+        keep("--recursion-depth", std::to_string(state.recursion_depth));
+        current_.recursion_depth = state.recursion_depth;
+    }
+}
+
+// One row's widget; true when it changed the command line.
+bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
+    const PanelControl& control = option.control;
+    const std::optional<std::string> given = line_.value(option.name);
+    const char* label = option.name.c_str();
+    if (!option.value) {
+        bool on = given.has_value();
+        const bool changed = ImGui::Checkbox(label, &on);
+        tooltip(option.help);
+        if (changed) {
+            on ? line_.set(option.name, "") : line_.remove(option.name);
+        }
+        return changed;
+    }
+    if (control.kind == PanelControl::Kind::Choice || control.kind == PanelControl::Kind::SceneCamera) {
+        const std::vector<std::string> choices =
+            control.kind == PanelControl::Kind::Choice ? split(control.choices, '|') : view.camera_names;
+        const std::string shown = given ? *given : "(default)";
+        bool changed = false;
+        if (ImGui::BeginCombo(label, shown.c_str())) {
+            for (const std::string& choice : choices) {
+                if (ImGui::Selectable(choice.c_str(), given && *given == choice)) {
+                    line_.set(option.name, choice);
+                    changed = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+        tooltip(option.help);
+        return changed;
+    }
+    // A slider row: unset rows (derived from the scene) start at the row's example when set.
+    ImGui::PushID(label);
+    bool set = given.has_value();
+    bool changed = ImGui::Checkbox("##set", &set);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("set %s (unticked: the default, derived from the scene)", label);
+    }
+    ImGui::SameLine();
+    if (changed && !set) {
+        line_.remove(option.name);
+    } else if (changed && set) {
+        line_.set(option.name, option.example ? option.example : "");
+    }
+    ImGui::PopID();
+    const std::optional<std::string> text = line_.value(option.name);
+    if (!text) {
+        ImGui::TextDisabled("%s (default)", label);
+        tooltip(option.help);
+        return changed;
+    }
+    const std::vector<std::string> parts = split(*text, control.separator);
+    std::array<float, 4> v{};
+    const int count = std::min(control.components, 4);
+    for (int i = 0; i < count && i < static_cast<int>(parts.size()); ++i) {
+        v[i] = std::strtof(parts[i].c_str(), nullptr);
+    }
+    const ImGuiSliderFlags flags = control.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
+    bool moved = false;
+    if (control.whole) {
+        std::array<int, 4> n{};
+        for (int i = 0; i < count; ++i) {
+            n[i] = static_cast<int>(std::lround(v[i]));
+        }
+        const int low = static_cast<int>(control.low), high = static_cast<int>(control.high);
+        moved = ImGui::SliderScalarN(label, ImGuiDataType_S32, n.data(), count, &low, &high, "%d", flags);
+        for (int i = 0; i < count; ++i) {
+            v[i] = static_cast<float>(n[i]);
+        }
+    } else {
+        const float low = control.low, high = control.high;
+        moved = ImGui::SliderScalarN(label, ImGuiDataType_Float, v.data(), count, &low, &high, "%.3g", flags);
+    }
+    tooltip(option.help);
+    if (moved) {
+        line_.set(option.name, join(v.data(), count, control));
+    }
+    return changed || moved;
+}
+
+PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view) {
+    follow(state);
+    PanelOutcome outcome;
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidthPx, ImGui::GetIO().DisplaySize.y), ImGuiCond_Always);
+    ImGui::Begin("frustum-demo window (P hides)", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-125.0f);
+    bool edited = false;
+    // The rows of the effect shown first, then those of no one effect
+    // (--effect, --msaa, fog, stereo), then the other effects' (folded).
+    const render::Effect shown = state.effect;
+    const auto rows = [&](auto&& take) {
+        for (const Option& option : options()) {
+            const bool panel_row = (option.commands & kWindow) &&
+                                   (option.control.kind != PanelControl::Kind::None ||
+                                    (option.effect_row && !option.value));
+            if (panel_row && take(row_effect(option))) {
+                edited = row_widget(option, view) || edited;
+            }
+        }
+    };
+    // A refused value (from the last edit) and why an effect was not drawn, on top.
+    if (error_) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("not applied: %s", error_->c_str());
+        ImGui::PopStyleColor();
+    }
+    if (view.notice) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", view.notice->c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::TextDisabled("hover a name for its --help line");
+    rows([](std::optional<render::Effect> effect) { return !effect; });
+    const std::string own = std::string(render::to_string(shown)) + " effect";
+    ImGui::Separator();
+    ImGui::TextUnformatted(own.c_str());
+    rows([&](std::optional<render::Effect> effect) { return effect == shown; });
+    if (ImGui::CollapsingHeader("the other effects' options")) {
+        rows([&](std::optional<render::Effect> effect) { return effect && effect != shown; });
+    }
+    if (edited) {
+        auto parsed = line_.parse();
+        auto* settings = std::get_if<Settings>(&parsed);
+        const std::optional<std::string> refused = settings && view.check ? view.check(*settings) : std::nullopt;
+        if (settings && !refused) {
+            error_.reset();
+            current_ = *settings;
+            accepted_ = line_;
+            outcome.settings = *settings;
+        } else if (refused) {
+            error_ = *refused;
+            line_ = accepted_; // the window keeps what it shows
+        } else if (auto* failure = std::get_if<Failure>(&parsed)) {
+            error_ = failure->message;
+        }
+    }
+    if (state.effect == render::Effect::Recursion && state.link_moves.size() >= 2 &&
+        ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const float reach_m = 0.5f * view.scene_radius_m;
+        const char* sides[] = {"left", "right"};
+        for (int i = 0; i < 2; ++i) {
+            render::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
+            ImGui::PushID(i);
+            ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
+            ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);
+            ImGui::PopID();
+        }
+    }
+    numbers(view);
+    const float travel_m = kMirrorTravel * view.mirror_size_m;
+    if (view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::SliderAngle("turn", &state.mirror.turn_rad, -180.0f, 180.0f);
+        ImGui::SliderAngle("tilt", &state.mirror.tilt_rad, -85.0f, 85.0f);
+        ImGui::SliderFloat("slide m", &state.mirror.slide_m, -travel_m, travel_m, "%.3g");
+        ImGui::SliderFloat("push m", &state.mirror.push_m, -travel_m, travel_m, "%.3g");
+        if (ImGui::Button("mirror back (M)")) {
+            state.mirror = {};
+        }
+    }
+    if (ImGui::Button("screenshot")) {
+        outcome.screenshot = true;
+    }
+    ImGui::TextWrapped("%s", line_.text().c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return outcome;
+}
+
+void WindowPanel::numbers(const PanelView& view) const {
+    if (!view.numbers || !ImGui::CollapsingHeader("numbers", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    const window::LiveNumbers& n = *view.numbers;
+    const auto matrix = [](const char* name, const glm::mat4& m) {
+        ImGui::Text("%s", name);
+        for (int r = 0; r < 4; ++r) {
+            ImGui::Text("  %9.4f %9.4f %9.4f %9.4f", static_cast<double>(m[0][r]), static_cast<double>(m[1][r]),
+                        static_cast<double>(m[2][r]), static_cast<double>(m[3][r]));
+        }
+    };
+    matrix("camera M (clip = M world)", n.pair.matrix());
+    matrix("its inverse M^-1 (analytic)", n.pair.inverse());
+    ImGui::Text("|M M^-1 - I| = %.3g (largest entry)", n.residual);
+    if (n.mirror_rect) {
+        ImGui::TextWrapped("mirror rectangle: %dx%d px at %d,%d from the bottom left (outlined in the mirror effects)",
+                           n.mirror_rect->width, n.mirror_rect->height, n.mirror_rect->x, n.mirror_rect->y);
+    }
+    for (const window::PassTiming& pass : n.passes) {
+        ImGui::TextWrapped("%s: %.1f us CPU", pass.pass.c_str(), pass.cpu_us);
+        ImGui::TextDisabled("  %s", pass.result.c_str());
+    }
+    if (view.gpu_ms) {
+        ImGui::Text("frame GPU time: %.3f ms (timer query)", *view.gpu_ms);
+    } else {
+        ImGui::Text("frame: %.3f ms CPU wall time (%s)", view.paint_cpu_ms,
+                    view.gpu_timer_available ? "timer result pending" : "no GPU timer query in this context");
+    }
+}
+
+} // namespace demo

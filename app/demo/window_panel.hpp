@@ -1,0 +1,70 @@
+// The window's control panel (Dear ImGui; key P shows or hides it): one
+// widget per row of the option table that window accepts and that names a
+// PanelControl (demo/effect_options.hpp), plus its flags as checkboxes, the
+// mirror's placement, a screenshot button, and the live numbers of the
+// frame. A changed widget edits the window's command line
+// (demo/panel_command_line.hpp), which is re-parsed by the same code as at
+// start-up: a value the row refuses shows the row's message in the panel
+// and changes nothing. Draws between window::ImGuiLayer::begin_frame() and
+// end_frame().
+#pragma once
+
+#include "demo/panel_command_line.hpp"
+
+#include <window/controls.hpp>
+#include <window/live_numbers.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace demo {
+
+// The panel covers the window's left kPanelWidthPx screen units, full height.
+inline constexpr float kPanelWidthPx = 330.0f;
+
+struct PanelView {
+    const window::LiveNumbers* numbers = nullptr;
+    std::optional<double> gpu_ms;  // timer query of the last frame, when the context has one
+    double paint_cpu_ms = 0.0;     // CPU wall time of the frame's GL calls
+    bool gpu_timer_available = false;
+    std::optional<std::string> notice; // why an effect was not drawn
+    float mirror_size_m = 0.0f; // window::ControlScene's; 0: no mirror sliders
+    float scene_radius_m = 1.0f; // the recursion mirrors' push sliders span half of it either way
+    std::vector<std::string> camera_names; // the scene's cameras, for --camera (index order)
+    // What only the running window can check (e.g. --msaa against the
+    // context's GL_MAX_SAMPLES): a message refuses the parsed settings.
+    std::function<std::optional<std::string>(const Settings&)> check;
+};
+
+struct PanelOutcome {
+    std::optional<Settings> settings; // a control changed and the command line parses
+    bool screenshot = false;          // the screenshot button
+};
+
+class WindowPanel {
+public:
+    // args: the window's command line (args[0] "window"); settings: its parse.
+    WindowPanel(std::vector<std::string> args, Settings settings)
+        : line_(std::move(args)), accepted_(line_), current_(std::move(settings)) {}
+
+    // Rows the keys change (effect, tiles, mirror, lens power, recursion
+    // depth) follow `state` first; the mirror sliders edit state.mirror.
+    PanelOutcome draw(window::ViewerState& state, const PanelView& view);
+
+    const PanelCommandLine& command_line() const { return line_; }
+
+private:
+    void follow(const window::ViewerState& state);
+    bool row_widget(const Option& option, const PanelView& view);
+    void numbers(const PanelView& view) const;
+
+    PanelCommandLine line_;
+    PanelCommandLine accepted_; // the last command line the window took
+    Settings current_;
+    std::optional<std::string> error_;
+    bool followed_ = false;
+};
+
+} // namespace demo

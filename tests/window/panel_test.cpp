@@ -1,0 +1,85 @@
+// The window's control panel (key P, --panel) under xvfb-run: it covers
+// only its own region (the left demo::kPanelWidthPx screen units), hiding
+// it again gives `frustum-demo render`'s image, and clicks on it (xdotool,
+// panel_clicks.sh) change the effect and an option while a refused value
+// shows its error in the panel and leaves the view alone. Tolerances:
+// shots.hpp; "differs" means more than 200 pixels differ by more than it.
+#include "process.hpp"
+#include "shots.hpp"
+
+#include <doctest/doctest.h>
+
+#include <demo/window_panel.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using window_test::check_similar;
+using window_test::crop;
+using window_test::pixels_differing;
+using window_test::read;
+using window_test::render_offscreen;
+using window_test::TempDir;
+
+constexpr int kPanelPx = static_cast<int>(demo::kPanelWidthPx) + 1; // with its border
+constexpr int kDiffers = 200;
+
+// The part of a screenshot right of the panel.
+image::Image beside_panel(const image::Image& shot) { return crop(shot, kPanelPx, 0, shot.width, shot.height); }
+image::Image panel_part(const image::Image& shot) { return crop(shot, 0, 0, kPanelPx, shot.height); }
+
+} // namespace
+
+TEST_SUITE("window") {
+
+TEST_CASE("the panel covers only its region; hidden again the window equals render") {
+    TempDir dir;
+    const auto shot = [&](const std::string& file, std::vector<std::string> extra) {
+        std::vector<std::string> options{"--size", "480x270", "--frames", "4", "--screenshot", (dir / file).string()};
+        options.insert(options.end(), extra.begin(), extra.end());
+        return window_test::run_window_under_xvfb(options);
+    };
+    const auto shown = shot("panel.png", {"--panel"});
+    if (!shown) {
+        return;
+    }
+    REQUIRE_MESSAGE(shown->exit_status == 0, shown->err);
+    // P three times: hidden, shown (one ImGui frame drawn), hidden, then the screenshot.
+    const auto hidden = shot("hidden.png", {"--panel", "--keys", "P,P,P"});
+    REQUIRE_MESSAGE(hidden->exit_status == 0, hidden->err);
+    const image::Image rendered = render_offscreen(dir, "plain", "480x270");
+    const image::Image with_panel = read(dir / "panel.png");
+    check_similar(beside_panel(with_panel), beside_panel(rendered), "beside the panel");
+    CHECK(pixels_differing(panel_part(with_panel), panel_part(rendered)) > 20000);
+    check_similar(read(dir / "hidden.png"), rendered, "panel hidden again");
+}
+
+TEST_CASE("clicks on the panel change the effect and the lens power; a refused value changes nothing") {
+    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
+    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
+        window_test::find_on_path("import").empty()) {
+        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+        return;
+    }
+    TempDir dir;
+    const std::string script = std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/panel_clicks.sh";
+    const window_test::Child child = window_test::run(
+        xvfb_run, {"-a", "-s", "-screen 0 1024x768x24", "bash", script, window_test::kDemo, (dir / "").string()});
+    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
+    const image::Image a = read(dir / "a.png"), b = read(dir / "b.png"), c = read(dir / "c.png"),
+                       d = read(dir / "d.png");
+    REQUIRE(a.width == 480);
+    // The effect list's "lens": the view is render's lens effect.
+    check_similar(beside_panel(b), beside_panel(render_offscreen(dir, "lens", "480x360")), "lens chosen");
+    CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
+    // The --lens-power slider: another magnification.
+    CHECK(pixels_differing(beside_panel(b), beside_panel(c)) > kDiffers);
+    // Its left end, 0, is refused by the row ("--lens-power must be a number
+    // in (0, 2]"): the panel shows the message, the view stays.
+    check_similar(beside_panel(d), beside_panel(c), "refused value");
+    CHECK(pixels_differing(crop(c, 0, 20, kPanelPx, 45), crop(d, 0, 20, kPanelPx, 45)) > kDiffers); // the message on top
+}
+
+} // TEST_SUITE
