@@ -161,13 +161,10 @@ FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>
     using W = typename Wider<T>::type;
     const Cols<T> rows = transpose(k_inverse);
     const V4<W> p_w = convert<W, T>(p), m3_w = convert<W, T>(k_row3);
-    // row by row, each widened row used at once for both sums (GLM's order:
-    // (r0 v0 + r1 v1) + (r2 v2 + r3 v3))
-    const V4<W> r0 = convert<W, T>(rows.c[0]), r1 = convert<W, T>(rows.c[1]);
-    const V4<W> d01 = r0 * lane<0>(p_w) + r1 * lane<1>(p_w), e01 = r0 * lane<0>(m3_w) + r1 * lane<1>(m3_w);
-    const V4<W> r2 = convert<W, T>(rows.c[2]), r3 = convert<W, T>(rows.c[3]);
-    const V4<W> d = d01 + (r2 * lane<2>(p_w) + r3 * lane<3>(p_w));
-    const V4<W> e = e01 + (r2 * lane<2>(m3_w) + r3 * lane<3>(m3_w));
+    const Cols<W> rows_w{{convert<W, T>(rows.c[0]), convert<W, T>(rows.c[1]), convert<W, T>(rows.c[2]),
+                          convert<W, T>(rows.c[3])}};
+    const V4<W> d = dots(rows_w, p_w);
+    const V4<W> e = dots(rows_w, m3_w);
     return {d, e, convert<T, W>(W(k_sign) * d)};
 }
 

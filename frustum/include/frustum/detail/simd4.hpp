@@ -244,8 +244,7 @@ inline float dot(const V4<float>& a, const V4<float>& b) {
 }
 inline double dot(const Double4& a, const Double4& b) {
     const Double4 t = a * b;
-    const Double2 pairs = __builtin_shufflevector(t.lo, t.hi, 0, 2) + __builtin_shufflevector(t.lo, t.hi, 1, 3);
-    return pairs[0] + pairs[1];
+    return (t.lo[0] + t.lo[1]) + (t.hi[0] + t.hi[1]);
 }
 template <class T>
 inline T dot(const V4<T>& a, const V4<T>& b) {
@@ -255,13 +254,17 @@ inline T dot(const V4<T>& a, const V4<T>& b) {
 // M v as glm computes it.
 template <class T>
 inline V4<T> mat_vec(const Cols<T>& m, const V4<T>& v) {
-    return (m.c[0] * lane<0>(v) + m.c[1] * lane<1>(v)) + (m.c[2] * lane<2>(v) + m.c[3] * lane<3>(v));
+    if constexpr (std::is_same_v<T, float>) { // splats by shuffles (GCC otherwise goes through memory on NEON)
+        return (m.c[0] * lane<0>(v) + m.c[1] * lane<1>(v)) + (m.c[2] * lane<2>(v) + m.c[3] * lane<3>(v));
+    } else {
+        return (m.c[0] * v[0] + m.c[1] * v[1]) + (m.c[2] * v[2] + m.c[3] * v[3]);
+    }
 }
 
 // (glm::dot(v, m[0]), ..., glm::dot(v, m[3])), i.e. M^T v, from the rows.
 template <class T>
 inline V4<T> dots(const Cols<T>& rows, const V4<T>& v) {
-    return (rows.c[0] * lane<0>(v) + rows.c[1] * lane<1>(v)) + (rows.c[2] * lane<2>(v) + rows.c[3] * lane<3>(v));
+    return mat_vec(rows, v);
 }
 
 } // namespace frustum::detail
