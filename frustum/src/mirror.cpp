@@ -68,28 +68,30 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    const V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared)); // unit
-    const V4<T> c_clip = -detail::dots(detail::transpose(inv), p);
-    // The real eye in front of the mirror: eye_side > 64 eps |inv_2|.
+    const V4<T> p = detail::load(plane.abcd); // not normalized: the clip is scale-invariant
+    const V4<T> m_row3 = detail::transpose(m).c[3];
+    const detail::ClipPlane<T> clip_plane = detail::clip_plane(inv, m_row3, p, T(-1));
+    const V4<T>& c_clip = clip_plane.c_clip; // -(M^-T p)
+    // The real eye in front of the mirror: eye_side > 64 eps |inv_2| |n|,
+    // squared (no square roots).
     const T eye_side = clip_z_span<T>(pair.depth()) * c_clip[2];
-    const T floor = T(64) * std::numeric_limits<T>::epsilon() * std::sqrt(detail::dot<T>(inv.c[2], inv.c[2]));
-    if (!(eye_side > floor)) {
+    const T floor = T(64) * std::numeric_limits<T>::epsilon();
+    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * (detail::dot<T>(inv.c[2], inv.c[2]) * length_squared))) {
         return mirror_reference(pair, plane);
     }
-    // reflect() of the unit plane, as the reference form does it (it
-    // normalizes the plane it is given once more: the same bits).
-    const T unit_length_squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-    const V4<T> c = p * (T(1) / std::sqrt(unit_length_squared));
-    const V4<T> n{c[0], c[1], c[2], T(0)};
+    // reflect() (eq. 16) with R = I - (2 / |n|^2) n c^T: M R has columns
+    // M_j - (2 p_j / |n|^2) M n, R M^-1 columns M^-1_j - (2 (p . M^-1_j) / |n|^2) n,
+    // and p . M^-1_j = -c'_j.
+    const V4<T> n{p[0], p[1], p[2], T(0)};
     const V4<T> m_n = detail::mat_vec(m, n);
-    const V4<T> two_c = T(2) * c, two_c_inv = T(2) * detail::dots(detail::transpose(inv), c);
+    const T two_over_length_squared = T(2) / length_squared;
+    const V4<T> two_c = two_over_length_squared * p, two_c_inv = two_over_length_squared * c_clip;
     detail::Cols<T> reflected, reflected_inv;
     for (int j = 0; j < 4; ++j) {
         reflected.c[j] = m.c[j] - two_c[j] * m_n;
-        reflected_inv.c[j] = inv.c[j] - two_c_inv[j] * n;
+        reflected_inv.c[j] = inv.c[j] + two_c_inv[j] * n;
     }
-    const V4<T> m_row3 = detail::transpose(m).c[3];
-    return detail::clip_columns(reflected, reflected_inv, p, c_clip, inv, m_row3, T(-1), pair.depth(),
+    return detail::clip_columns(reflected, reflected_inv, p, clip_plane, T(-1), pair.depth(),
                                 detail::PairFactory::flipped_traits(pair),
                                 [&] { return mirror_reference(pair, plane); });
 }

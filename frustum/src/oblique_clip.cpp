@@ -112,12 +112,12 @@ Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& pl
     }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    // Normalized although the clip is scale-invariant: the unit plane gives
-    // the reference form's bits (and its accuracy table) exactly.
-    const detail::V4<T> p = detail::load(plane.abcd) * (T(1) / std::sqrt(length_squared));
-    const detail::V4<T> c_clip = detail::dots(detail::transpose(inv), p);
+    // Not normalized: every output of the clip is invariant under the
+    // plane's scale (k c and X are).
+    const detail::V4<T> p = detail::load(plane.abcd);
     const detail::V4<T> m_row3 = detail::transpose(m).c[3];
-    return detail::clip_columns(m, inv, p, c_clip, inv, m_row3, T(1), pair.depth(), detail::PairFactory::traits(pair),
+    return detail::clip_columns(m, inv, p, detail::clip_plane(inv, m_row3, p, T(1)), T(1), pair.depth(),
+                                detail::PairFactory::traits(pair),
                                 [&] { return clip_oblique_reference(pair, plane); });
 }
 

@@ -143,23 +143,45 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 
 // ---- oblique clip (eq. 20-27, column form; oblique_clip.hpp) ----
 
+// The clip plane in clip space and what k needs, formed in the wider type
+// (double for float pairs: every product of two floats is exact there, so
+// these dot products lose almost nothing to rounding, and k is rounded to
+// float once). With k_inverse = M^-1 of the pair k is taken from (the pair
+// itself for a plain clip, the unreflected pair for a mirror, see
+// oblique_clip_core.hpp) and its row 3 m3:
+//   d_j = p . M^-1_j,   e_j = m3 . M^-1_j,   c' = k_sign d (rounded to T).
+// Then for Q = M^-1 q: c . Q = d . q and m3 . Q = e . q.
+template <class T>
+struct ClipPlane {
+    V4<typename Wider<T>::type> d, e;
+    V4<T> c_clip;
+};
+template <class T>
+FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>& k_row3, const V4<T>& p, T k_sign) {
+    using W = typename Wider<T>::type;
+    const Cols<T> rows = transpose(k_inverse);
+    const V4<W> p_w = convert<W, T>(p), m3_w = convert<W, T>(k_row3);
+    const Cols<W> rows_w{{convert<W, T>(rows.c[0]), convert<W, T>(rows.c[1]), convert<W, T>(rows.c[2]),
+                          convert<W, T>(rows.c[3])}};
+    const V4<W> d = dots(rows_w, p_w);
+    const V4<W> e = dots(rows_w, m3_w);
+    return {d, e, convert<T, W>(W(k_sign) * d)};
+}
+
 // The oblique clip of the pair (m, inv) by the plane p, which need not be
-// unit: every output is invariant under p's scale (k c and X are). c_clip is
-// p in this pair's clip space, Q = k_inverse q and m3 . Q with m3 = k_row3
-// and the sign k_sign (oblique_clip_core.hpp: mirror forms them on the
-// unreflected pair). When a check fails or the numbers leave the safe range
-// it returns slow(): the caller's normalized reference form (cold, in
-// src/oblique_clip.cpp and mirror.cpp), which refuses with the error text
-// or, at a rounding boundary of a check, gives the result.
-//
-// (Forming k and 1 / X_2 from one division, g = 1 / (a b c'_z) with
-// a = (z_f - z_n)(m3 . Q), b = c . Q, was measured: 15% higher mean error,
-// so the two divisions stay.)
+// unit: every output is invariant under p's scale (k c and X are). plane
+// comes from clip_plane() with k_sign (-1 for a mirror: c' = -(M^-T c)
+// there, and k = -(m3 . Q) / (c . Q) on the unreflected pair). When a check
+// fails or the numbers leave the safe range it returns slow(): the caller's
+// normalized reference form (cold, in src/oblique_clip.cpp and mirror.cpp),
+// which refuses with the error text or, at a rounding boundary of a check,
+// gives the result.
 template <class T, class Slow>
 FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Cols<T>& inv, const V4<T>& p,
-                                                      const V4<T>& c_clip, const Cols<T>& k_inverse,
-                                                      const V4<T>& k_row3, T k_sign, DepthRange depth,
+                                                      const ClipPlane<T>& plane, T k_sign, DepthRange depth,
                                                       unsigned traits, Slow&& slow) {
+    using W = typename Wider<T>::type;
+    const V4<T>& c_clip = plane.c_clip;
     const T z_near = clip_z_near<T>(depth);
     const T z_far = clip_z_far<T>(depth);
     const T span = z_far - z_near;
@@ -170,32 +192,36 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Co
     const T eye_side = span * c_clip[2];
     const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
     // Far corner on the plane's positive side (erratum 2), not a sliver.
-    const V4<T> q{std::copysign(T(1), c_clip[0]), std::copysign(T(1), c_clip[1]), z_far, T(1)};
-    const T c_dot_q = dot<T>(c_clip, q);
+    const T c_dot_q = dot<T>(c_clip, signs_xy_with(c_clip, z_far));
     const T scale = std::abs(c_clip[0]) + std::abs(c_clip[1]) + std::abs(c_clip[2]) + std::abs(c_clip[3]);
 
-    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (analytic-inverse-accuracy.md).
-    const V4<T> big_q = mat_vec(k_inverse, q);
-    const T a = span * (k_sign * dot<T>(k_row3, big_q));
-    const T b = dot<T>(p, big_q);
+    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (analytic-inverse-accuracy.md),
+    // q = (sign c'_x, sign c'_y, z_f, 1): both dot products from d and e.
+    // k and 1 / X_2 side by side: two independent divisions, not three in
+    // series (X_2 = (z_f - z_n) k c'_z, so 1 / X_2 = b / (a c'_z)).
+    const V4<W> q = signs_xy_with(W(k_sign) * plane.d, W(z_far));
+    const W a = W(span) * (W(k_sign) * dot<W>(plane.e, q));
+    const W b = dot<W>(plane.d, q);
+    const T span_k = T(a / b);
+    const T inv_x2 = T(b / (a * W(c_clip[2])));
     if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
-          std::isnormal(b) && std::isnormal(a * c_clip[2]))) {
+          std::isnormal(span_k) && std::isnormal(inv_x2))) {
         return slow();
     }
-    const T span_k = a / b;
     // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
-    // column j. T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
-    // column j - (X_j / X_2) column 2.
+    // column j.
     const V4<T> m_w = transpose(m).c[3];
     const V4<T> row2 = span_k * p + z_near * m_w;
     const auto column = [&](int j) { return store<T>(with_lane<2>(m.c[j], row2[j])); };
-    const V4<T> x = span_k * c_clip + V4<T>{T(0), T(0), T(0), z_near};
-    const T inv_x2 = T(1) / x[2];
-    const V4<T> x_over_x2 = x * inv_x2;
+    // T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
+    // column j - (X_j / X_2) column 2, with X_j / X_2 = c'_j / c'_z for
+    // j = 0, 1 and c'_w / c'_z + z_n / X_2 for j = 3 (c' / c'_z does not
+    // wait for k, and has fewer roundings).
+    const V4<T> c_over_cz = c_clip / splat(c_clip[2]);
     return PairFactory::keep_sign_result<T>(
-        column(0), column(1), column(2), column(3), store<T>(inv.c[0] - x_over_x2[0] * inv.c[2]),
-        store<T>(inv.c[1] - x_over_x2[1] * inv.c[2]), store<T>(inv.c[2] * inv_x2),
-        store<T>(inv.c[3] - x_over_x2[3] * inv.c[2]), traits);
+        column(0), column(1), column(2), column(3), store<T>(inv.c[0] - c_over_cz[0] * inv.c[2]),
+        store<T>(inv.c[1] - c_over_cz[1] * inv.c[2]), store<T>(inv.c[2] * inv_x2),
+        store<T>(inv.c[3] - (c_over_cz[3] + z_near * inv_x2) * inv.c[2]), traits);
 }
 
 } // namespace frustum::detail

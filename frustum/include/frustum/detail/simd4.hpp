@@ -8,7 +8,15 @@
 
 #include "frustum/types.hpp"
 
+#include <climits>
 #include <cstring>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#elif defined(__aarch64__)
+#include <arm_neon.h>
+#endif
 
 namespace frustum::detail {
 
@@ -124,6 +132,80 @@ inline bool all_lanes(const M& mask) {
     return all == ~0ull;
 }
 
+// The type the oblique clip forms k in: double for float pairs on targets
+// whose float multiply-adds are rounded twice (x86-64 SSE, wasm): every
+// product of two floats is exact in double, so the dot products of k lose
+// almost nothing to rounding (docs/analytic-inverse-accuracy.md). On aarch64,
+// where GCC fuses them (one rounding per multiply-add), float: there the
+// double lanes would cost more instructions than re-inverting
+// (docs/performance.md).
+template <class T>
+struct Wider {
+    typedef T type;
+};
+template <>
+struct Wider<float> {
+#if defined(__aarch64__)
+    typedef float type;
+#else
+    typedef double type;
+#endif
+};
+inline Double4 widen(const V4<float>& v) {
+#if defined(__SSE2__)
+    // cvtps2pd twice (GCC's generic conversion goes lane by lane through memory)
+    return {_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v))};
+#elif defined(__aarch64__)
+    return {vcvt_f64_f32(vget_low_f32(v)), vcvt_high_f64_f32(v)};
+#else
+    return {Double2{v[0], v[1]}, Double2{v[2], v[3]}};
+#endif
+}
+inline const Double4& widen(const Double4& v) {
+    return v;
+}
+// Back to the pair's type (round to nearest).
+template <class T>
+inline V4<T> narrow(const Double4& v);
+template <>
+inline V4<float> narrow<float>(const Double4& v) {
+#if defined(__SSE2__)
+    return _mm_movelh_ps(_mm_cvtpd_ps(v.lo), _mm_cvtpd_ps(v.hi));
+#elif defined(__aarch64__)
+    return vcvt_high_f32_f64(vcvt_f32_f64(v.lo), v.hi);
+#else
+    return V4<float>{float(v.lo[0]), float(v.lo[1]), float(v.hi[0]), float(v.hi[1])};
+#endif
+}
+template <>
+inline V4<double> narrow<double>(const Double4& v) {
+    return v;
+}
+
+// v in the type W (float <-> double, or unchanged).
+template <class W, class T>
+inline V4<W> convert(const V4<T>& v) {
+    if constexpr (std::is_same_v<W, T>) {
+        return v;
+    } else if constexpr (std::is_same_v<W, double>) {
+        return widen(v);
+    } else {
+        return narrow<W>(v);
+    }
+}
+
+// (sign(v_0) 1, sign(v_1) 1, z, 1): copysign on lanes 0 and 1 as bit
+// operations on the whole vector (the same values as std::copysign).
+inline V4<float> signs_xy_with(const V4<float>& v, float z) {
+    typedef int Int4 __attribute__((vector_size(16)));
+    const Int4 sign_bits = (Int4)v & Int4{INT_MIN, INT_MIN, 0, 0}; // vector casts reinterpret the bits
+    return (V4<float>)((Int4)V4<float>{1.0f, 1.0f, z, 1.0f} | sign_bits);
+}
+inline Double4 signs_xy_with(const Double4& v, double z) {
+    const Long2 sign_bits = (Long2)v.lo & Long2{LLONG_MIN, LLONG_MIN};
+    return {(Double2)((Long2)Double2{1.0, 1.0} | sign_bits), Double2{z, 1.0}};
+}
+
 // A matrix as four column vectors.
 template <class T>
 struct Cols {
@@ -153,23 +235,36 @@ inline Cols<double> transpose(const Cols<double>& m) {
              Double4(__builtin_shufflevector(c[0].hi, c[1].hi, 1, 3), __builtin_shufflevector(c[2].hi, c[3].hi, 1, 3))}};
 }
 
-// glm::dot(a, b).
+// glm::dot(a, b): (t0 + t1) + (t2 + t3), the pair sums in one vector
+// addition (pairwise adds on NEON, one shuffle and add on SSE).
+inline float dot(const V4<float>& a, const V4<float>& b) {
+    const V4<float> t = a * b;
+    const V4<float> pairs = t + __builtin_shufflevector(t, t, 1, 0, 3, 2);
+    return pairs[0] + pairs[2];
+}
+inline double dot(const Double4& a, const Double4& b) {
+    const Double4 t = a * b;
+    return (t.lo[0] + t.lo[1]) + (t.hi[0] + t.hi[1]);
+}
 template <class T>
 inline T dot(const V4<T>& a, const V4<T>& b) {
-    const V4<T> t = a * b;
-    return (t[0] + t[1]) + (t[2] + t[3]);
+    return dot(a, b);
 }
 
 // M v as glm computes it.
 template <class T>
 inline V4<T> mat_vec(const Cols<T>& m, const V4<T>& v) {
-    return (m.c[0] * v[0] + m.c[1] * v[1]) + (m.c[2] * v[2] + m.c[3] * v[3]);
+    if constexpr (std::is_same_v<T, float>) { // splats by shuffles (GCC otherwise goes through memory on NEON)
+        return (m.c[0] * lane<0>(v) + m.c[1] * lane<1>(v)) + (m.c[2] * lane<2>(v) + m.c[3] * lane<3>(v));
+    } else {
+        return (m.c[0] * v[0] + m.c[1] * v[1]) + (m.c[2] * v[2] + m.c[3] * v[3]);
+    }
 }
 
 // (glm::dot(v, m[0]), ..., glm::dot(v, m[3])), i.e. M^T v, from the rows.
 template <class T>
 inline V4<T> dots(const Cols<T>& rows, const V4<T>& v) {
-    return (rows.c[0] * v[0] + rows.c[1] * v[1]) + (rows.c[2] * v[2] + rows.c[3] * v[3]);
+    return mat_vec(rows, v);
 }
 
 } // namespace frustum::detail
