@@ -6,27 +6,14 @@
 //
 //   count_driver <op> <repeats>
 //   op: none crop reflect clip mirror glm_inverse crop_glm reflect_glm clip_glm mirror_glm
+#include "count_case.hpp"
 #include "reinvert.hpp"
-
-#include <frustum/frustum.hpp>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <optional>
 
-namespace {
-
+using bench::keep;
 using frustum::DepthRange;
-
-// Keeps the compiler from folding the case into constants or dropping the
-// result (the operands live in memory it cannot see through).
-template <class V>
-void keep(V& value) {
-    asm volatile("" : : "r"(&value) : "memory");
-}
-
-} // namespace
 
 int main(int argc, char** argv) {
     if (argc != 3) {
@@ -35,14 +22,12 @@ int main(int argc, char** argv) {
     }
     const char* op = argv[1];
     const int repeats = std::atoi(argv[2]);
-    const auto projection =
-        frustum::perspective(1.0f, 16.0f / 9.0f, 0.1f, std::optional<float>(100.0f), DepthRange::ZeroToOne);
-    const auto view = frustum::look_at(glm::vec3(0.0f, 1.0f, 3.0f), glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    if (!projection || !view) {
-        std::fprintf(stderr, "count_driver: %s%s\n", projection.error().c_str(), view.error().c_str());
+    const auto camera = bench::count_camera();
+    if (!camera) {
+        std::fprintf(stderr, "count_driver: %s\n", camera.error().c_str());
         return 1;
     }
-    const frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
+    const frustum::MatrixPair<float> pair = *camera;
     const bench::RawPair<float> raw = bench::raw(pair);
     // A mirror in front of the eye, facing it (the eye is at y = 1).
     frustum::Plane<float> plane(0.0f, 0.96f, 0.28f, 0.2f);
@@ -51,12 +36,7 @@ int main(int argc, char** argv) {
     keep(rect);
     static const char* const ops[] = {"none",        "crop",     "reflect",     "clip",     "mirror",
                                       "glm_inverse", "crop_glm", "reflect_glm", "clip_glm", "mirror_glm"};
-    int which = -1;
-    for (int k = 0; k < 10; ++k) {
-        if (std::strcmp(op, ops[k]) == 0) {
-            which = k;
-        }
-    }
+    const int which = bench::op_index(op, ops);
     if (which < 0) {
         std::fprintf(stderr, "count_driver: unknown op '%s'\n", op);
         return 2;

@@ -7,27 +7,16 @@
 //
 //   count_tiles_driver <op> <G> <repeats>
 //   op: crop_tiles crop_tiles_glm lens_tiles lens_tiles_glm
+#include "count_case.hpp"
 #include "reinvert.hpp"
 
 #include <frustum/detail/lens_matrices.hpp>
-#include <frustum/frustum.hpp>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <optional>
 #include <vector>
 
-namespace {
-
-using frustum::DepthRange;
-
-template <class V>
-void keep(V& value) {
-    asm volatile("" : : "r"(&value) : "memory");
-}
-
-} // namespace
+using bench::keep;
 
 int main(int argc, char** argv) {
     if (argc != 4) {
@@ -37,26 +26,19 @@ int main(int argc, char** argv) {
     const char* op = argv[1];
     const int g = std::atoi(argv[2]);
     const int repeats = std::atoi(argv[3]);
-    const auto projection =
-        frustum::perspective(1.0f, 16.0f / 9.0f, 0.1f, std::optional<float>(100.0f), DepthRange::ZeroToOne);
-    const auto view = frustum::look_at(glm::vec3(0.0f, 1.0f, 3.0f), glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    if (!projection || !view || g < 1) {
-        std::fprintf(stderr, "count_tiles_driver: %s%s (G=%d)\n", projection.error().c_str(), view.error().c_str(), g);
+    const auto camera = bench::count_camera();
+    if (!camera || g < 1) {
+        std::fprintf(stderr, "count_tiles_driver: %s (G=%d)\n", camera ? "grid size must be >= 1" : camera.error().c_str(), g);
         return 1;
     }
-    frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
+    frustum::MatrixPair<float> pair = *camera;
     const bench::RawPair<float> raw = bench::raw(pair);
     const auto frame = frustum::near_plane_frame(pair);
     frustum::Lens<float> lens{glm::vec2(0.1f, -0.05f) * frame->half_height_m, 0.6f * frame->half_height_m, 1.5f};
     keep(pair);
     keep(lens);
     static const char* const ops[] = {"crop_tiles", "crop_tiles_glm", "lens_tiles", "lens_tiles_glm"};
-    int which = -1;
-    for (int k = 0; k < 4; ++k) {
-        if (std::strcmp(op, ops[k]) == 0) {
-            which = k;
-        }
-    }
+    const int which = bench::op_index(op, ops);
     if (which < 0) {
         std::fprintf(stderr, "count_tiles_driver: unknown op '%s'\n", op);
         return 2;
