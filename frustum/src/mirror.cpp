@@ -4,6 +4,7 @@
 #include "frustum/detail/finite.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_updates.hpp"
+#include "frustum/detail/window_camera.hpp"
 #include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
@@ -174,17 +175,13 @@ Result<MatrixPair<T>> mirror_rectangle(const Rectangle<T>& rect, const Vec3<T>& 
         return detail::error<T>("mirror_rectangle", "far must exceed the near distance",
                                 {{"near", near_m}, {"far", far_m}});
     }
-    auto projection = off_axis(left, right, bottom, top, near_m, std::optional<T>(far_m), depth);
-    if (!projection) {
-        return Error{"frustum::mirror_rectangle(): " + projection.error()};
-    }
-    // eq. 33: view = Q^T shifted to O' (rows i, j, k).
-    Mat3<T> rotation;
-    for (int col = 0; col < 3; ++col) {
-        rotation[col] = Vec3<T>(cam.i[col], cam.j[col], cam.k[col]);
-    }
-    const auto view = RigidTransform<T>::from_rotation_translation(rotation, -(rotation * reflected_eye));
-    return compose(*projection, view);
+    // eq. 28 and eq. 33: the window camera at O' with rows i, j, k. For the
+    // exact fit this is screen_projection() of the mirror's bounding
+    // rectangle (the mirror itself when a1 is perpendicular to a2) seen
+    // from O', with near = O''s distance to the mirror.
+    return detail::window_camera(
+        detail::WindowCamera<T>{cam.i, cam.j, cam.k, reflected_eye, left, right, bottom, top, near_m, far_m}, depth,
+        "frustum::mirror_rectangle()");
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                                     \

@@ -3,7 +3,7 @@
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/finite.hpp"
 #include "frustum/detail/tolerances.hpp"
-#include "frustum/projection.hpp"
+#include "frustum/detail/window_camera.hpp"
 
 #include <cmath>
 
@@ -49,17 +49,8 @@ Result<MatrixPair<T>> screen_projection(const Vec3<T>& pa, const Vec3<T>& pb, co
     const T scale = near_m / distance;
     const T left = glm::dot(vr, va) * scale, right = glm::dot(vr, vb) * scale;
     const T bottom = glm::dot(vu, va) * scale, top = glm::dot(vu, vc) * scale;
-    auto projection = off_axis(left, right, bottom, top, near_m, far_m, depth);
-    if (!projection) {
-        return projection.take_error_in("frustum::screen_projection()");
-    }
-    // Rows of the view rotation are vr, vu, vn (Kooima's M^T), then -pe.
-    Mat3<T> rotation;
-    for (int col = 0; col < 3; ++col) {
-        rotation[col] = Vec3<T>(vr[col], vu[col], vn[col]);
-    }
-    const auto view = RigidTransform<T>::from_rotation_translation(rotation, -(rotation * pe));
-    return compose(*projection, view);
+    return detail::window_camera(detail::WindowCamera<T>{vr, vu, vn, pe, left, right, bottom, top, near_m, far_m}, depth,
+                                 "frustum::screen_projection()");
 }
 
 template Result<MatrixPair<float>> screen_projection(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&,
