@@ -4,7 +4,8 @@
 // The closed-form inverse comes from off_axis() and the rigid view, so
 // nothing is inverted. mirror_rectangle(..., MirrorFit::Exact) is the same
 // camera with eye = O' and near = the distance from O' to the mirror
-// (tests/math/screen_projection_test.cpp checks the numbers).
+// (both built by detail::window_camera(); tests/math/screen_projection_test.cpp
+// checks the numbers).
 #pragma once
 
 #include "frustum/matrix_pair.hpp"
