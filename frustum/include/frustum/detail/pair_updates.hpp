@@ -202,10 +202,16 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Co
     const V4<W> q = signs_xy_with(W(k_sign) * plane.d, W(z_far));
     const W a = W(span) * (W(k_sign) * dot<W>(plane.e, q));
     const W b = dot<W>(plane.d, q);
+    // The divisions only once their divisors are known non-zero (a plane
+    // through the eye has c'_z = 0): no division by zero, also under
+    // -fsanitize=float-divide-by-zero; the checks do not wait for them.
+    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
+          a != W(0) && b != W(0))) {
+        return slow();
+    }
     const T span_k = T(a / b);
     const T inv_x2 = T(b / (a * W(c_clip[2])));
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
-          std::isnormal(span_k) && std::isnormal(inv_x2))) {
+    if (!(std::isnormal(span_k) && std::isnormal(inv_x2))) {
         return slow();
     }
     // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
