@@ -79,6 +79,7 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
     if (request.verbose) {
         note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
              std::to_string(gl::max_samples(*session->fn)) + ")");
+        note(depth_summary(*session->renderer, request.depth));
     }
     auto painter = window::FramePainter::create(*session->fn);
     if (!painter) {
@@ -104,6 +105,7 @@ void take_settings(const Settings& settings, window::ViewerState& state) {
     state.lens_power = settings.lens_power; // [ and ] change it
     state.recursion_depth = settings.recursion_depth;
     state.msaa_samples = settings.msaa_samples;
+    state.depth = settings.depth;
 }
 
 window::ViewerState initial_state(const WindowRequest& request) {
