@@ -289,6 +289,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         frame->text.clear();
         const auto paint_start = std::chrono::steady_clock::now();
         s.timer->begin();
+        frame->options.pass_end = [&s](const char* pass) { s.timer->mark(pass); };
         frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
                                       ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
                                       : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
@@ -332,6 +333,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 PanelView view;
                 view.numbers = &numbers;
                 view.gpu_ms = s.timer->last_ms();
+                view.gpu_passes = s.timer->last_passes();
                 view.gpu_timer_available = s.timer->available();
                 view.paint_cpu_ms = paint_ms;
                 view.notice = notice;
