@@ -15,7 +15,7 @@ namespace {
 
 constexpr int kMaxSidePx = 8192;
 constexpr int kMaxFrames = 1000000;
-constexpr unsigned kOffscreen = kRender | kReports; // --backend, --depth, --out
+constexpr unsigned kOffscreen = kRender | kReports; // --backend, --out; --depth (and window)
 
 using Apply = std::optional<Failure> (*)(Settings&, const std::string&);
 
@@ -218,7 +218,7 @@ std::vector<Option> session_rows() {
          "zero_to_one: [0, 1] clip depth via clip control when the\n"
          "context has it, else matrices converted to [-1, 1] (default);\n"
          "minus_one_to_one: always the conversion",
-         depth, kOffscreen, "minus_one_to_one", false},
+         depth, kOffscreen | kWindow, "minus_one_to_one", false, choice("zero_to_one|minus_one_to_one")},
         {"--msaa", "N",
          "multisampled anti-aliasing with N samples per pixel, 1 = off\n"
          "(default 4, or the most the context offers when fewer)",

@@ -20,16 +20,11 @@
 #include <utility>
 
 namespace demo {
-namespace {
-
-
 std::string depth_summary(const render::Renderer& renderer, render::DepthPath path) {
     return renderer.gpu_depth_range(path) == frustum::DepthRange::ZeroToOne
                ? "depth: [0, 1] clip range via clip control"
                : "depth: matrices converted to the [-1, 1] clip range";
 }
-
-} // namespace
 
 std::optional<render::StereoRig> stereo_rig(const EffectSettings& settings, const frustum::MatrixPair<float>& camera,
                                             const scene::Scene& scene) {

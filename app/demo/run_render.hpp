@@ -43,6 +43,10 @@ struct EffectSetup {
 };
 EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter);
 
+// The --verbose line saying which clip depth range `path` gives on the
+// renderer's context ("depth: [0, 1] clip range via clip control", ...).
+std::string depth_summary(const render::Renderer& renderer, render::DepthPath path);
+
 // The stereo rig --stereo, --ipd-m and --convergence-m ask for (the
 // convergence derived from the scene's mirror and bounds when unset, as
 // seen from `camera`); empty without --stereo.

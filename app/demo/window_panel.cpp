@@ -284,6 +284,9 @@ void WindowPanel::numbers(const PanelView& view) const {
     }
     if (view.gpu_ms) {
         ImGui::Text("frame GPU time: %.3f ms (timer query)", *view.gpu_ms);
+        for (const window::GpuTimer::PassTime& pass : view.gpu_passes) {
+            ImGui::Text("  %s: %.3f ms GPU (timestamps)", pass.pass.c_str(), pass.gpu_ms);
+        }
     } else {
         ImGui::Text("frame: %.3f ms CPU wall time (%s)", view.paint_cpu_ms,
                     view.gpu_timer_available ? "timer result pending" : "no GPU timer query in this context");

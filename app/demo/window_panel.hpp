@@ -12,6 +12,7 @@
 #include "demo/panel_command_line.hpp"
 
 #include <window/controls.hpp>
+#include <window/gpu_timer.hpp>
 #include <window/live_numbers.hpp>
 
 #include <functional>
@@ -27,6 +28,7 @@ inline constexpr float kPanelWidthPx = 330.0f;
 struct PanelView {
     const window::LiveNumbers* numbers = nullptr;
     std::optional<double> gpu_ms;  // timer query of the last frame, when the context has one
+    std::vector<window::GpuTimer::PassTime> gpu_passes; // that frame's passes (timestamp queries)
     double paint_cpu_ms = 0.0;     // CPU wall time of the frame's GL calls
     bool gpu_timer_available = false;
     std::optional<std::string> notice; // why an effect was not drawn

@@ -79,6 +79,7 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
     if (request.verbose) {
         note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
              std::to_string(gl::max_samples(*session->fn)) + ")");
+        note(depth_summary(*session->renderer, request.depth));
     }
     auto painter = window::FramePainter::create(*session->fn);
     if (!painter) {
@@ -104,6 +105,7 @@ void take_settings(const Settings& settings, window::ViewerState& state) {
     state.lens_power = settings.lens_power; // [ and ] change it
     state.recursion_depth = settings.recursion_depth;
     state.msaa_samples = settings.msaa_samples;
+    state.depth = settings.depth;
 }
 
 window::ViewerState initial_state(const WindowRequest& request) {
@@ -287,6 +289,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         frame->text.clear();
         const auto paint_start = std::chrono::steady_clock::now();
         s.timer->begin();
+        frame->options.pass_end = [&s](const char* pass) { s.timer->mark(pass); };
         frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
                                       ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
                                       : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
@@ -330,6 +333,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 PanelView view;
                 view.numbers = &numbers;
                 view.gpu_ms = s.timer->last_ms();
+                view.gpu_passes = s.timer->last_passes();
                 view.gpu_timer_available = s.timer->available();
                 view.paint_cpu_ms = paint_ms;
                 view.notice = notice;

@@ -99,6 +99,9 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
         }
     }
     reflection->resolve();
+    if (ctx.pass_end) {
+        ctx.pass_end("reflection");
+    }
     frame.bind();
     begin_frame(ctx);
     SceneDraw main{draw.camera};

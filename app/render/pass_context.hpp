@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
+
 namespace render {
 
 // One directional light plus ambient, in world space (scene.frag).
@@ -34,6 +36,8 @@ struct PassContext {
     // MSAA samples of the frame; the passes' own targets (the reflection
     // texture, the curved mirror's atlas) are multisampled alike and resolved.
     int samples = 1;
+    // RenderOptions::pass_end: called as a pass ends, when set.
+    std::function<void(const char* pass)> pass_end;
 };
 
 } // namespace render

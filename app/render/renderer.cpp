@@ -138,8 +138,12 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
     frame.bind();
     PassContext ctx = pass_context(*depth, options.lighting);
     ctx.samples = frame.samples();
+    ctx.pass_end = options.pass_end;
     if (auto status = draw(effect, ctx, frame, cameras, options); !status) {
         return status;
+    }
+    if (ctx.pass_end) {
+        ctx.pass_end("main view");
     }
     frame.bind();
     return gl::check_error(*fn_, "render::Renderer::render()");

@@ -27,12 +27,17 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace render {
 
 struct RenderOptions {
+    // Called as each pass of render_into() ends, with the pass's name
+    // ("reflection" in the mirror effect, then "main view"); unset: not
+    // called (the window's GPU timer marks a timestamp there).
+    std::function<void(const char* pass)> pass_end;
     int width_px = 640;
     int height_px = 360;
     DepthPath depth = DepthPath::ClipControlWhenAvailable;

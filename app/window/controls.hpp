@@ -10,6 +10,7 @@
 #include <plan/effect.hpp>
 #include <plan/link_moves.hpp>
 #include <plan/view_tree.hpp>
+#include <render/depth_policy.hpp>
 #include <scene/scene.hpp>
 
 #include <glm/glm.hpp>
@@ -47,6 +48,7 @@ struct ViewerState {
     bool show_panel = false; // the control panel (key P; --panel starts with it)
     bool show_inset = false; // the frustum view in a corner
     int msaa_samples = 0;    // gl::choose_samples(): 0 = 4 or the context's maximum, 1 = off
+    render::DepthPath depth = render::DepthPath::ClipControlWhenAvailable; // --depth
     bool quit = false;
 };
 

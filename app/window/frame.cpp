@@ -34,6 +34,7 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     frame.options.recursion_depth = state.recursion_depth;
     frame.options.link_moves = state.link_moves;
     frame.options.msaa_samples = state.msaa_samples;
+    frame.options.depth = state.depth;
     frame.inset = state.show_inset;
     if (state.show_help) {
         frame.text = help_lines(state);

@@ -98,7 +98,9 @@ frustum::Status FramePainter::paint_inset(const render::Renderer& renderer, cons
         if (!inset) {
             return inset.take_error();
         }
-        if (auto status = renderer.render_into(inset_effect(frame.effect), frame.cameras, frame.options, **inset);
+        render::RenderOptions inset_options = frame.options;
+        inset_options.pass_end = nullptr; // the main view's passes only
+        if (auto status = renderer.render_into(inset_effect(frame.effect), frame.cameras, inset_options, **inset);
             !status) {
             return status;
         }

@@ -5,6 +5,7 @@ namespace {
 
 constexpr GLenum kTimeElapsed = 0x88BF;  // GL_TIME_ELAPSED(_EXT)
 constexpr GLenum kGpuDisjoint = 0x8FBB;  // GL_GPU_DISJOINT_EXT
+constexpr GLenum kTimestamp = 0x8E28;    // GL_TIMESTAMP(_EXT)
 
 } // namespace
 
@@ -24,6 +25,56 @@ GpuTimer::GpuTimer(const gl::Context& context, const gl::Functions& fn) : fn_(&f
     }
     get_result_ = proc;
     disjoint_query_ = es;
+    query_counter_ = reinterpret_cast<QueryCounter>(context.get_proc_address(es ? "glQueryCounterEXT" : "glQueryCounter"));
+}
+
+void GpuTimer::stamp(Stamps& stamps) {
+    if (!query_counter_) {
+        return;
+    }
+    if (stamps.used == stamps.queries.size()) {
+        auto made = gl::Query::create(*fn_);
+        if (!made) {
+            return; // no stamp: this frame's passes are left out
+        }
+        stamps.queries.push_back(std::move(*made));
+    }
+    query_counter_(stamps.queries[stamps.used].id(), kTimestamp);
+    ++stamps.used;
+}
+
+void GpuTimer::read_passes(Stamps& stamps) {
+    last_passes_.clear();
+    if (stamps.used != stamps.names.size() + 1) {
+        stamps.names.clear();
+        stamps.used = 0;
+        return;
+    }
+    std::vector<GLuint64> ns(stamps.used, 0);
+    for (std::size_t i = 0; i < stamps.used; ++i) {
+        get_result_(stamps.queries[i].id(), GL_QUERY_RESULT, &ns[i]);
+    }
+    for (std::size_t i = 1; i < stamps.used; ++i) {
+        if (ns[i] < ns[i - 1] || ns[i] == 0) { // a context without timestamp bits answers 0
+            last_passes_.clear();
+            break;
+        }
+        last_passes_.push_back({stamps.names[i - 1], static_cast<double>(ns[i] - ns[i - 1]) * 1e-6});
+    }
+    stamps.names.clear();
+    stamps.used = 0;
+}
+
+void GpuTimer::mark(const char* pass) {
+    if (!available() || !query_counter_) {
+        return;
+    }
+    Stamps& stamps = stamps_[current_];
+    const std::size_t before = stamps.used;
+    stamp(stamps);
+    if (stamps.used > before) {
+        stamps.names.emplace_back(pass);
+    }
 }
 
 void GpuTimer::begin() {
@@ -40,12 +91,19 @@ void GpuTimer::begin() {
         }
         if (disjoint) {
             last_ms_.reset();
+            last_passes_.clear();
+            stamps_[current_].names.clear();
+            stamps_[current_].used = 0;
         } else {
             last_ms_ = static_cast<double>(ns) * 1e-6;
+            read_passes(stamps_[current_]);
         }
         pending_[current_] = false;
     }
     fn_->BeginQuery(kTimeElapsed, queries_[current_].id());
+    stamps_[current_].names.clear();
+    stamps_[current_].used = 0;
+    stamp(stamps_[current_]);
 }
 
 void GpuTimer::end() {

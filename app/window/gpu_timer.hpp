@@ -4,6 +4,9 @@
 // queries in turn, so reading never waits for the GPU). Without the
 // extension, or after a disjoint event, the panel shows the CPU wall time
 // of the same calls instead, labelled as such.
+// Per pass: a GL_TIMESTAMP query (glQueryCounter) at begin() and at each
+// mark(pass) (render::RenderOptions::pass_end); a pass's time is the
+// difference of its stamps, read with the frame's.
 #pragma once
 
 #include <gl/context.hpp>
@@ -12,6 +15,8 @@
 
 #include <array>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace window {
 
@@ -22,14 +27,35 @@ public:
 
     bool available() const { return get_result_ != nullptr; }
     void begin();
+    void mark(const char* pass); // between begin() and end(): `pass` ends here
     void end();
     // The last frame's GPU time whose result has arrived, in milliseconds.
     std::optional<double> last_ms() const { return last_ms_; }
 
+    struct PassTime {
+        std::string pass;
+        double gpu_ms = 0.0;
+    };
+    // That frame's passes, in order (empty: no marks, or no timestamps).
+    const std::vector<PassTime>& last_passes() const { return last_passes_; }
+
 private:
     using GetResult = void (*)(GLuint, GLenum, GLuint64*);
+    using QueryCounter = void (*)(GLuint, GLenum);
+    // One frame's stamps: [0] at begin(), [i] as names[i - 1] ends.
+    struct Stamps {
+        std::vector<gl::Query> queries;
+        std::vector<std::string> names;
+        std::size_t used = 0;
+    };
+    void stamp(Stamps& stamps);
+    void read_passes(Stamps& stamps);
+
     const gl::Functions* fn_;
     GetResult get_result_ = nullptr;
+    QueryCounter query_counter_ = nullptr;
+    std::array<Stamps, 2> stamps_;
+    std::vector<PassTime> last_passes_;
     bool disjoint_query_ = false; // GL_EXT_disjoint_timer_query: check GL_GPU_DISJOINT_EXT
     std::array<gl::Query, 2> queries_;
     std::array<bool, 2> pending_{false, false};

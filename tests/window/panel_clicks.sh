@@ -40,10 +40,10 @@ sleep 0.5
 xdotool mousemove --window "$wid" 40 185 click 1 # its sixth entry: lens
 settle
 shot b.png
-xdotool mousemove --window "$wid" 75 328 click 1 # --lens-power, a quarter along
+xdotool mousemove --window "$wid" 75 351 click 1 # --lens-power, a quarter along
 settle
 shot c.png
-xdotool mousemove --window "$wid" 36 328 click 1 # its left end: 0
+xdotool mousemove --window "$wid" 36 351 click 1 # its left end: 0
 settle
 shot d.png
 xdotool key --window "$wid" Escape

@@ -9,9 +9,13 @@
 #include <gl/offscreen_target.hpp>
 #include <image/compare.hpp>
 #include <render/renderer.hpp>
+#include <window/gpu_timer.hpp>
 #include <window/mirror_pose.hpp>
 
+#include <chrono>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -113,6 +117,55 @@ TEST_CASE("move_mirror rejects a bad motion or instance") {
     const auto out_of_range = rig->renderer->move_mirror(glm::mat4(1.0f), {999});
     REQUIRE_FALSE(out_of_range.ok());
     CHECK(out_of_range.error().find("attached instance 999 is out of range") != std::string::npos);
+}
+
+// The window's per-pass GPU time: timestamp queries as each pass ends,
+// read two frames later (the timer's double buffer). The frame they must fit
+// in: the CPU wall time from before begin() to after glFinish(), which the
+// GPU work between the stamps cannot exceed (tolerance 5% + 0.01 ms, two
+// clocks). (The frame's own GL_TIME_ELAPSED reads back a clock value on
+// Mesa's llvmpipe here, so it is not the bound.)
+TEST_CASE("the GPU timer gives the mirror effect's reflection and main passes, positive, within the frame") {
+    const auto rig = make_rig();
+    if (!rig) {
+        return;
+    }
+    window::GpuTimer timer(*rig->context, *rig->fn);
+    if (!timer.available()) {
+        MESSAGE("skipping: the context has neither GL_EXT_disjoint_timer_query nor GL_ARB_timer_query");
+        return;
+    }
+    auto target = gl::OffscreenTarget::create(*rig->fn, {256, 144});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    render::RenderOptions o = options();
+    o.pass_end = [&timer](const char* pass) { timer.mark(pass); };
+    const auto start = std::chrono::steady_clock::now();
+    timer.begin();
+    REQUIRE(rig->renderer->render_into(render::Effect::Mirror, render_test::showcase_cameras(), o, *target).ok());
+    timer.end();
+    rig->fn->Finish();
+    const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    timer.begin(); // a frame without passes in the other query
+    timer.end();
+    timer.begin(); // reads the mirror frame
+    timer.end();
+    const std::vector<window::GpuTimer::PassTime>& passes = timer.last_passes();
+    if (passes.empty()) {
+        MESSAGE("skipping: the context's timestamp queries answer 0 (no GL_TIMESTAMP bits)");
+        return;
+    }
+    REQUIRE(passes.size() == 2);
+    CHECK(passes[0].pass == "reflection");
+    CHECK(passes[1].pass == "main view");
+    double sum_ms = 0.0;
+    for (const auto& pass : passes) {
+        CAPTURE(pass.pass);
+        CHECK(pass.gpu_ms > 0.0);
+        sum_ms += pass.gpu_ms;
+    }
+    MESSAGE("frame wall " << wall_ms << " ms, reflection " << passes[0].gpu_ms << " ms, main view "
+                          << passes[1].gpu_ms << " ms");
+    CHECK(sum_ms <= wall_ms * 1.05 + 0.01);
 }
 
 } // TEST_SUITE

@@ -55,11 +55,14 @@ TEST_CASE("the window's screenshot matches the offscreen renderer for every effe
 }
 
 // The effect options set where the window starts: --lens-power and --tiles
-// (the viewer's state, which the keys then change) as much as the others.
-TEST_CASE("the window starts from --lens-power and --tiles as render draws them") {
+// (the viewer's state, which the keys then change) as much as the others;
+// --depth minus_one_to_one the [-1, 1] conversion (the default takes clip
+// control where the context has it, so this is the other path).
+TEST_CASE("the window starts from --lens-power, --tiles and --depth as render draws them") {
     for (const std::vector<std::string>& options :
          {std::vector<std::string>{"--effect", "lens", "--lens-power", "1.5"},
-          std::vector<std::string>{"--effect", "tiles", "--tiles", "20x2", "--tile-borders"}}) {
+          std::vector<std::string>{"--effect", "tiles", "--tiles", "20x2", "--tile-borders"},
+          std::vector<std::string>{"--effect", "mirror", "--depth", "minus_one_to_one", "--verbose"}}) {
         CAPTURE(options[1]);
         TempDir dir;
         const std::string shot = (dir / "window.png").string();
@@ -70,6 +73,11 @@ TEST_CASE("the window starts from --lens-power and --tiles as render draws them"
             return;
         }
         REQUIRE_MESSAGE(child->exit_status == 0, child->err);
+        if (options[2] == "--depth") {
+            CHECK_MESSAGE(child->err.find("depth: matrices converted to the [-1, 1] clip range\n") !=
+                              std::string::npos,
+                          child->err);
+        }
         std::vector<std::string> render_args{"render", "--size", "128x72", "--out", (dir / "render").string()};
         render_args.insert(render_args.end(), options.begin(), options.end());
         const Child rendered = window_test::run(kDemo, render_args);
