@@ -37,7 +37,7 @@ struct PassContext {
     // texture, the curved mirror's atlas) are multisampled alike and resolved.
     int samples = 1;
     // RenderOptions::pass_end: called as a pass ends, when set.
-    std::function<void(const char* pass)> pass_end;
+    std::function<void(const char* pass)> pass_end = {};
 };
 
 } // namespace render

@@ -43,26 +43,29 @@ void GpuTimer::stamp(Stamps& stamps) {
     ++stamps.used;
 }
 
-void GpuTimer::read_passes(Stamps& stamps) {
+std::optional<double> GpuTimer::read_stamps(Stamps& stamps) {
     last_passes_.clear();
-    if (stamps.used != stamps.names.size() + 1) {
-        stamps.names.clear();
-        stamps.used = 0;
-        return;
-    }
-    std::vector<GLuint64> ns(stamps.used, 0);
-    for (std::size_t i = 0; i < stamps.used; ++i) {
-        get_result_(stamps.queries[i].id(), GL_QUERY_RESULT, &ns[i]);
-    }
-    for (std::size_t i = 1; i < stamps.used; ++i) {
-        if (ns[i] < ns[i - 1] || ns[i] == 0) { // a context without timestamp bits answers 0
-            last_passes_.clear();
-            break;
+    std::optional<double> frame_ms;
+    // [0] at begin(), one per mark(), the last at end().
+    if (stamps.used == stamps.names.size() + 2) {
+        std::vector<GLuint64> ns(stamps.used, 0);
+        for (std::size_t i = 0; i < stamps.used; ++i) {
+            get_result_(stamps.queries[i].id(), GL_QUERY_RESULT, &ns[i]);
         }
-        last_passes_.push_back({stamps.names[i - 1], static_cast<double>(ns[i] - ns[i - 1]) * 1e-6});
+        bool valid = ns[0] != 0; // a context without timestamp bits answers 0
+        for (std::size_t i = 1; i < stamps.used; ++i) {
+            valid = valid && ns[i] >= ns[i - 1];
+        }
+        if (valid) {
+            for (std::size_t i = 0; i < stamps.names.size(); ++i) {
+                last_passes_.push_back({stamps.names[i], static_cast<double>(ns[i + 1] - ns[i]) * 1e-6});
+            }
+            frame_ms = static_cast<double>(ns.back() - ns.front()) * 1e-6;
+        }
     }
     stamps.names.clear();
     stamps.used = 0;
+    return frame_ms;
 }
 
 void GpuTimer::mark(const char* pass) {
@@ -95,8 +98,12 @@ void GpuTimer::begin() {
             stamps_[current_].names.clear();
             stamps_[current_].used = 0;
         } else {
-            last_ms_ = static_cast<double>(ns) * 1e-6;
-            read_passes(stamps_[current_]);
+            // The frame from its first and last timestamps where the context
+            // has them (llvmpipe's offscreen EGL context answers
+            // GL_TIME_ELAPSED with a clock reading, not an interval), else
+            // the GL_TIME_ELAPSED query.
+            const std::optional<double> stamped_ms = read_stamps(stamps_[current_]);
+            last_ms_ = stamped_ms ? *stamped_ms : static_cast<double>(ns) * 1e-6;
         }
         pending_[current_] = false;
     }
@@ -110,6 +117,7 @@ void GpuTimer::end() {
     if (!available()) {
         return;
     }
+    stamp(stamps_[current_]);
     fn_->EndQuery(kTimeElapsed);
     pending_[current_] = true;
     current_ = 1 - current_;

@@ -4,9 +4,10 @@
 // queries in turn, so reading never waits for the GPU). Without the
 // extension, or after a disjoint event, the panel shows the CPU wall time
 // of the same calls instead, labelled as such.
-// Per pass: a GL_TIMESTAMP query (glQueryCounter) at begin() and at each
-// mark(pass) (render::RenderOptions::pass_end); a pass's time is the
-// difference of its stamps, read with the frame's.
+// Per pass: a GL_TIMESTAMP query (glQueryCounter) at begin(), at each
+// mark(pass) (render::RenderOptions::pass_end) and at end(); a pass's time
+// is the difference of its stamps, read with the frame's, and where the
+// stamps answer, the frame's time is its last stamp minus its first.
 #pragma once
 
 #include <gl/context.hpp>
@@ -42,14 +43,15 @@ public:
 private:
     using GetResult = void (*)(GLuint, GLenum, GLuint64*);
     using QueryCounter = void (*)(GLuint, GLenum);
-    // One frame's stamps: [0] at begin(), [i] as names[i - 1] ends.
+    // One frame's stamps: [0] at begin(), [i] as names[i - 1] ends, the last at end().
     struct Stamps {
         std::vector<gl::Query> queries;
         std::vector<std::string> names;
         std::size_t used = 0;
     };
     void stamp(Stamps& stamps);
-    void read_passes(Stamps& stamps);
+    // Fills last_passes_; the frame's milliseconds when its stamps answer.
+    std::optional<double> read_stamps(Stamps& stamps);
 
     const gl::Functions* fn_;
     GetResult get_result_ = nullptr;
