@@ -146,7 +146,7 @@ std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) 
     return apply_depth(s.fit.pivot_m, "--pivot", value);
 }
 
-// ---- Fog (render/fog_pass.hpp): depth decoded with each pass's own pair ----
+// Fog (render/fog_pass.hpp): depth decoded with each pass's own pair.
 
 std::optional<Failure> apply_fog(EffectSettings& s, const std::string&) {
     if (!s.fog) {
@@ -175,9 +175,8 @@ std::optional<Failure> apply_fog_color(EffectSettings& s, const std::string& val
     return std::nullopt;
 }
 
-// ---- end of fog ----
 
-// ---- stereo (--stereo, --ipd-m, --convergence-m) ----
+// Stereo (--stereo, --ipd-m, --convergence-m).
 
 constexpr float kMaxIpdM = 10.0f;
 
@@ -199,9 +198,8 @@ std::optional<Failure> apply_convergence(EffectSettings& s, const std::string& v
     return apply_depth(s.convergence_m, "--convergence-m", value);
 }
 
-// ---- end of stereo ----
 
-// ---- portal and recursion effects (docs/portals.md) ----
+// The portal and recursion effects (docs/portals.md).
 
 std::optional<Failure> apply_recursion_depth(EffectSettings& s, const std::string& value) {
     const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, render::kMaxRecursionDepth);
@@ -222,7 +220,6 @@ std::optional<Failure> apply_recursion_links(EffectSettings& s, const std::strin
     return std::nullopt;
 }
 
-// ---- end of portal and recursion effects ----
 
 } // namespace
 
@@ -274,7 +271,7 @@ const std::vector<EffectOption>& effect_options() {
          "nonaffine effect: where the slit planes meet the camera's side planes,\n"
          "(0, 1000] m, below the far distance (default: the model centre's depth)",
          apply_pivot, kRender | kWindow, "5", slider(0.0f, kMaxDepthM, false, true)},
-        // ---- Fog (render/fog_pass.hpp) ----
+        // Fog (render/fog_pass.hpp).
         {"--fog", nullptr,
          "plain and mirror effects: distance fog from the depth buffer, the\n"
          "reflection decoded with its own oblique pair (default: the sky's\n"
@@ -284,19 +281,18 @@ const std::vector<EffectOption>& effect_options() {
          apply_fog_density, kRender | kWindow, "0.05", slider(0.0f, 1000.0f, false, true)},
         {"--fog-color", "r,g,b", "the fog's sRGB colour, each in [0, 1] (implies --fog; default the sky)",
          apply_fog_color, kRender | kWindow, "0.5,0.6,0.7", slider(0.0f, 1.0f, false, false, 3)},
-        // ---- end of fog ----
-        // ---- stereo ----
+        // Stereo.
         {"--stereo", nullptr,
          "left and right eyes side by side, each its own camera pair, with its\n"
          "own mirror reflection, lens and tiles (each eye half the width)",
          apply_stereo},
-        {"--ipd-m", "M", "stereo: interpupillary distance, [0, 10] m (default 0.064)", apply_ipd, kRender | kWindow, "0.1", slider(0.0f, kMaxIpdM, false, true)},
+        {"--ipd-m", "M", "stereo: interpupillary distance, [0, 10] m (default 0.064)", apply_ipd, kRender | kWindow,
+         "0.1", slider(0.0f, kMaxIpdM, false, true)},
         {"--convergence-m", "M",
          "stereo: depth of the zero-disparity plane, (0, 1000] m beyond the near\n"
          "plane (default: the mirror's centre, else the model's centre)",
          apply_convergence, kRender | kWindow, "4", slider(0.0f, kMaxDepthM, false, true)},
-        // ---- end of stereo ----
-        // ---- portal and recursion effects (docs/portals.md) ----
+        // The portal and recursion effects (docs/portals.md).
         {"--recursion-depth", "N",
          "recursion effect: links passed through, 0..8 (default 4; 0 = the plain\n"
          "frame with the mirrors' or portal's own colours)",
@@ -305,7 +301,6 @@ const std::vector<EffectOption>& effect_options() {
          "recursion effect: mirrors (two facing mirrors beside the model, default)\n"
          "| portals (a portal whose exit faces its entry)",
          apply_recursion_links, kRender | kWindow, "portals", choice("mirrors|portals")},
-        // ---- end of portal and recursion effects ----
     };
     return table;
 }
