@@ -33,17 +33,28 @@ settle() {
   return 1
 }
 shot() { import -window "$wid" "$out/$1"; }
+# A click as three steps with time between them, so that press and release
+# land in different frames even on a loaded machine (ImGui 1.86 keeps only
+# the button's state per frame: a press and release within one frame are
+# lost, and a release it misses lets the slider follow the pointer away).
+click() {
+  xdotool mousemove --window "$wid" "$1" "$2"
+  sleep 0.4
+  xdotool mousedown 1
+  sleep 0.4
+  xdotool mouseup 1
+  sleep 0.4
+}
 settle
 shot a.png
-xdotool mousemove --window "$wid" 100 76 click 1 # the --effect list (below --camera)
-sleep 0.5
-xdotool mousemove --window "$wid" 40 185 click 1 # its sixth entry: lens
+click 100 76 # the --effect list (below --camera)
+click 40 185 # its sixth entry: lens
 settle
 shot b.png
-xdotool mousemove --window "$wid" 75 351 click 1 # --lens-power, a quarter along
+click 75 351 # --lens-power, a quarter along
 settle
 shot c.png
-xdotool mousemove --window "$wid" 36 351 click 1 # its left end: 0
+click 36 351 # its left end: 0
 settle
 shot d.png
 xdotool key --window "$wid" Escape
