@@ -5,7 +5,6 @@
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_updates.hpp"
 #include "frustum/detail/window_camera.hpp"
-#include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 #include "frustum/reflect.hpp"
 
