@@ -93,14 +93,14 @@ frustum::Result<frustum::MatrixPair<float>> framing_camera(const scene::Bounds& 
     const glm::vec3 eye = center + glm::normalize(from_direction) * distance_m;
     auto view = frustum::look_at<float>(eye, center, glm::vec3(0.0f, 1.0f, 0.0f));
     if (!view) {
-        return frustum::Error{"render::framing_camera(): " + view.error()};
+        return view.take_error_in("render::framing_camera()");
     }
     // distance > radius (sin < 1), so near > 0.
     const float near_m = (distance_m - radius_m) * 0.5f;
     const float far_m = distance_m + radius_m * 2.0f;
     auto projection = frustum::perspective<float>(kFramingFovyRad, aspect, near_m, far_m, frustum::DepthRange::ZeroToOne);
     if (!projection) {
-        return frustum::Error{"render::framing_camera(): " + projection.error()};
+        return projection.take_error_in("render::framing_camera()");
     }
     return frustum::compose(*projection, *view);
 }

@@ -26,7 +26,7 @@ frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const fr
     constexpr const char* kWhere = "render::crossed_slits_frustum()";
     const auto frame = frustum::near_plane_frame(camera);
     if (!frame) {
-        return frustum::Error{std::string(kWhere) + ": " + frame.error()};
+        return frame.take_error_in(kWhere);
     }
     const auto camera_planes = frustum::planes(camera);
     if (!camera_planes.far) {

@@ -67,7 +67,7 @@ frustum::Result<StereoEyes> stereo_eyes(const frustum::MatrixPair<float>& camera
                                                        f.eye + side * half_ipd_m * f.right, f.near_m, f.far_m,
                                                        camera.depth());
         if (!pair) {
-            return frustum::Error{"render::stereo_eyes(): " + pair.error()};
+            return pair.take_error_in("render::stereo_eyes()");
         }
         return pair->cast<float>();
     };

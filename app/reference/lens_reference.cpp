@@ -98,7 +98,7 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
     }
     const auto near = frustum::near_plane_frame(draw.camera);
     if (!near) {
-        return frustum::Error{std::string(kWhere) + ": " + near.error()};
+        return near.take_error_in(kWhere);
     }
     const int width_px = frame.width(), height_px = frame.height();
     const int texture_width_px = supersampling * width_px, texture_height_px = supersampling * height_px;
@@ -113,11 +113,11 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
     }
     auto program = LensRemapProgram::build(ctx.fn);
     if (!program) {
-        return frustum::Error{std::string(kWhere) + ": " + program.error()};
+        return program.take_error_in(kWhere);
     }
     auto vertex_array = gl::VertexArray::create(ctx.fn); // the remap triangle has no attributes
     if (!vertex_array) {
-        return frustum::Error{std::string(kWhere) + ": " + vertex_array.error()};
+        return vertex_array.take_error_in(kWhere);
     }
     frame.bind();
     begin_frame(ctx);
@@ -131,12 +131,12 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
                                                        scale * height_px};
         auto pair = frustum::uncrop(draw.camera, camera_in_level);
         if (!pair) {
-            return frustum::Error{std::string(kWhere) + ": " + pair.error()};
+            return pair.take_error_in(kWhere);
         }
         auto source = gl::OffscreenTarget::create(
             ctx.fn, {texture_width_px, texture_height_px, gl::ColorStorage::Texture, gl::DepthFormat::Depth24});
         if (!source) {
-            return frustum::Error{std::string(kWhere) + ": " + source.error()};
+            return source.take_error_in(kWhere);
         }
         begin_frame(ctx);
         SceneDraw scene{*pair};

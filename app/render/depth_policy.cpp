@@ -15,7 +15,7 @@ frustum::Result<DepthPolicy> DepthPolicy::apply(const gl::Functions& fn, const g
     const frustum::DepthRange range = choose(fn, context, path);
     // Disabling also succeeds without clip control ([-1, 1] is then the only mode).
     if (auto status = gl::set_depth_zero_to_one(fn, range == frustum::DepthRange::ZeroToOne); !status) {
-        return frustum::Error{"render::DepthPolicy::apply(): " + status.error()};
+        return status.take_error_in("render::DepthPolicy::apply()");
     }
     return DepthPolicy(range);
 }

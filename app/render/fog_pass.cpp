@@ -106,7 +106,7 @@ frustum::Result<FogPass> FogPass::build(const gl::Functions& fn) {
     }
     auto vertex_array = gl::VertexArray::create(fn);
     if (!vertex_array) {
-        return frustum::Error{"render::FogPass::build(): " + vertex_array.error()};
+        return vertex_array.take_error_in("render::FogPass::build()");
     }
     FogPass pass;
     pass.program_ = std::move(*program);

@@ -23,7 +23,7 @@ frustum::Result<frustum::Lens<float>> lens_on_near_plane(const frustum::MatrixPa
     }
     const auto frame = frustum::near_plane_frame(camera);
     if (!frame) {
-        return frustum::Error{std::string(kLensOnNearPlane) + ": " + frame.error()};
+        return frame.take_error_in(kLensOnNearPlane);
     }
     frustum::Lens<float> lens;
     lens.power = power;
@@ -58,7 +58,7 @@ frustum::Result<frustum::Lens<float>> lens_on_near_plane(const frustum::MatrixPa
 frustum::Status draw_lens_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const LensDraw& draw) {
     auto tiles = frustum::lens_tiles(draw.camera, draw.lens, frame.width(), frame.height(), draw.grid, draw.grid);
     if (!tiles) {
-        return frustum::Error{"render::draw_lens_frame(): " + tiles.error()};
+        return tiles.take_error_in("render::draw_lens_frame()");
     }
     return draw_tiles(ctx, frame, *tiles, draw.skip_instance, "render::draw_lens_frame()");
 }

@@ -21,7 +21,7 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
         ctx.fn, {view.texture_width_px, view.texture_height_px, gl::ColorStorage::Texture, gl::DepthFormat::Depth24,
                  ctx.samples});
     if (!target) {
-        return frustum::Error{"render::draw_mirror_frame(): reflection texture: " + target.error()};
+        return target.take_error_in("render::draw_mirror_frame(): reflection texture");
     }
     begin_frame(ctx);
     SceneDraw draw{view.pair};

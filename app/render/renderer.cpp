@@ -116,12 +116,12 @@ frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cam
                                                const RenderOptions& options) const {
     auto samples = gl::choose_samples(*fn_, options.msaa_samples);
     if (!samples) {
-        return frustum::Error{"render::Renderer::render(): " + samples.error()};
+        return samples.take_error_in("render::Renderer::render()");
     }
     auto frame = gl::OffscreenTarget::create(
         *fn_, {options.width_px, options.height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, *samples});
     if (!frame) {
-        return frustum::Error{"render::Renderer::render(): " + frame.error()};
+        return frame.take_error_in("render::Renderer::render()");
     }
     if (auto status = render_into(effect, cameras, options, *frame); !status) {
         return status.take_error();

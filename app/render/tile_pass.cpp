@@ -57,7 +57,7 @@ frustum::Status draw_tiled_frame(const PassContext& ctx, const gl::OffscreenTarg
     constexpr const char* kWhere = "render::draw_tiled_frame()";
     auto tiles = frustum::crop_tiles(camera, frame.width(), frame.height(), columns, rows);
     if (!tiles) {
-        return frustum::Error{std::string(kWhere) + ": " + tiles.error()};
+        return tiles.take_error_in(kWhere);
     }
     if (auto status = draw_tiles(ctx, frame, *tiles, -1, kWhere); !status || !borders) {
         return status;
