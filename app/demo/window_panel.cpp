@@ -259,6 +259,37 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     return outcome;
 }
 
+// The pair's planes (normalized, inward: a x + b y + c z + d >= 0 inside)
+// and key points (world; "at infinity" gives the direction), §3.
+void WindowPanel::geometry(const window::LiveNumbers& n) const {
+    if (!ImGui::TreeNode("planes and key points (§3)")) {
+        return;
+    }
+    const char* plane_names[6] = {"left", "right", "bottom", "top", "near", "far"};
+    const auto planes = n.planes.as_array();
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+        if (!planes[i]) {
+            ImGui::Text("  %-6s at infinity", plane_names[i]);
+            continue;
+        }
+        const glm::vec4& p = planes[i]->abcd;
+        ImGui::Text("  %-6s %8.4f %8.4f %8.4f %9.4f", plane_names[i], static_cast<double>(p.x), static_cast<double>(p.y),
+                    static_cast<double>(p.z), static_cast<double>(p.w));
+    }
+    const auto point = [](const std::string& name, const glm::vec4& p) {
+        ImGui::Text("  %-4s %9.4f %9.4f %9.4f%s", name.c_str(), static_cast<double>(p.x), static_cast<double>(p.y),
+                    static_cast<double>(p.z), p.w == 0.0f ? "  (direction, at infinity)" : "");
+    };
+    point("O", n.points.eye);
+    point("D", n.points.center);
+    for (std::size_t i = 0; i < n.points.corners.size(); ++i) {
+        point("C" + std::to_string(i + 1), n.points.corners[i]);
+    }
+    point("O1", n.points.vanishing_y);
+    point("O2", n.points.vanishing_x);
+    ImGui::TreePop();
+}
+
 void WindowPanel::numbers(const PanelView& view) const {
     if (!view.numbers || !ImGui::CollapsingHeader("numbers", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
@@ -274,6 +305,7 @@ void WindowPanel::numbers(const PanelView& view) const {
     matrix("camera M (clip = M world)", n.pair.matrix());
     matrix("its inverse M^-1 (analytic)", n.pair.inverse());
     ImGui::Text("|M M^-1 - I| = %.3g (largest entry)", n.residual);
+    geometry(n);
     if (n.mirror_rect) {
         ImGui::TextWrapped("mirror rectangle: %dx%d px at %d,%d from the bottom left (outlined in the mirror effects)",
                            n.mirror_rect->width, n.mirror_rect->height, n.mirror_rect->x, n.mirror_rect->y);

@@ -61,6 +61,7 @@ private:
     void follow(const window::ViewerState& state);
     bool row_widget(const Option& option, const PanelView& view);
     void numbers(const PanelView& view) const;
+    void geometry(const window::LiveNumbers& numbers) const;
 
     PanelCommandLine line_;
     PanelCommandLine accepted_; // the last command line the window took

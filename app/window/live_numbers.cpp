@@ -32,9 +32,19 @@ double inverse_residual(const frustum::MatrixPair<float>& pair) {
 }
 
 LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
-    LiveNumbers numbers{frame.cameras.main.pair, 0.0, std::nullopt, {}};
+    LiveNumbers numbers{frame.cameras.main.pair, 0.0, {}, {}, std::nullopt, {}};
     const frustum::MatrixPair<float>& camera = frame.cameras.main.pair;
     numbers.residual = inverse_residual(camera);
+    numbers.planes = frustum::planes(camera);
+    numbers.points = frustum::key_points(camera);
+    const float tolerance = frustum::infinity_tolerance<float>();
+    for (glm::vec4& corner : numbers.points.corners) {
+        corner = frustum::to_point(corner, tolerance);
+    }
+    for (glm::vec4* point : {&numbers.points.center, &numbers.points.eye, &numbers.points.vanishing_x,
+                             &numbers.points.vanishing_y}) {
+        *point = frustum::to_point(*point, tolerance);
+    }
     const int width_px = frame.options.width_px, height_px = frame.options.height_px;
     const bool mirror_pass = frame.effect == render::Effect::Mirror || frame.effect == render::Effect::Curved ||
                              frame.effect == render::Effect::Frustum; // the effects that plan the reflection

@@ -10,6 +10,7 @@
 #include "window/frame.hpp"
 
 #include <frustum/matrix_pair.hpp>
+#include <frustum/queries.hpp>
 #include <plan/mirror_geometry.hpp>
 #include <scene/scene.hpp>
 
@@ -28,6 +29,9 @@ struct PassTiming {
 struct LiveNumbers {
     frustum::MatrixPair<float> pair;  // the frame's main camera
     double residual = 0.0;            // max |(M M^-1 - I)_ij|, in double
+    frustum::FrustumPlanes<float> planes; // normalized, inward-positive (§3.1)
+    frustum::KeyPoints<float> points;     // corners C1..C8, eye O, centre D in canonical form
+                                          // (to_point: w = 1, or w = 0 with |xyz| = 1 at infinity; §3.2)
     std::optional<render::PixelRect> mirror_rect; // from the bottom-left; empty: none on screen
     std::vector<PassTiming> passes;
 };

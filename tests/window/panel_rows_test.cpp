@@ -14,6 +14,7 @@
 #include <window/frame.hpp>
 #include <window/live_numbers.hpp>
 
+#include <cmath>
 #include <iterator>
 #include <string>
 #include <variant>
@@ -145,6 +146,29 @@ TEST_CASE("live numbers: the camera pair's residual, the mirror's rectangle, a t
     REQUIRE(numbers.passes.size() == 1);
     CHECK(numbers.passes[0].result.find("px texture") != std::string::npos);
     CHECK(numbers.passes[0].cpu_us >= 0.0);
+    // Planes and key points of the pair, in the forms the panel prints:
+    // the side planes pass through the eye, the near corners lie on the near
+    // plane and the far ones on the far plane, every corner inside or on the
+    // other planes, all finite points with w = 1.
+    REQUIRE(numbers.planes.far);
+    const auto distance = [](const frustum::Plane<float>& plane, const glm::vec4& point) {
+        return glm::dot(plane.abcd, point);
+    };
+    REQUIRE(numbers.points.eye.w == 1.0f);
+    const float scale = glm::length(glm::vec3(numbers.points.corners[7])); // far corner distance: error scale
+    for (const frustum::Plane<float>& side :
+         {numbers.planes.left, numbers.planes.right, numbers.planes.bottom, numbers.planes.top}) {
+        CHECK(std::abs(distance(side, numbers.points.eye)) < 1e-4f * scale);
+    }
+    for (std::size_t i = 0; i < 8; ++i) {
+        const glm::vec4& corner = numbers.points.corners[i];
+        REQUIRE(corner.w == 1.0f);
+        const frustum::Plane<float>& own = i < 4 ? numbers.planes.near : *numbers.planes.far;
+        CHECK(std::abs(distance(own, corner)) < 1e-4f * scale);
+        for (const auto& plane : numbers.planes.as_array()) {
+            CHECK(distance(*plane, corner) > -1e-4f * scale);
+        }
+    }
 
     state.effect = render::Effect::Recursion;
     const auto recursion = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
