@@ -4,6 +4,7 @@
 
 #include <gl/errors.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -70,6 +71,20 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
         }
         stats->per_level.assign(static_cast<std::size_t>(levels), DrawCounts{});
     }
+    // ctx.pass_end hears "level k (n views)" as each view of level k >= 1
+    // ends (level 0, the camera's view, is the caller's "main view").
+    std::vector<std::string> level_names;
+    if (ctx.pass_end) {
+        std::vector<int> views;
+        for (const ViewNode& node : draw.nodes) {
+            views.resize(std::max(views.size(), static_cast<std::size_t>(node.level) + 1), 0);
+            ++views[static_cast<std::size_t>(node.level)];
+        }
+        for (std::size_t level = 0; level < views.size(); ++level) {
+            level_names.push_back("level " + std::to_string(level) + " (" + std::to_string(views[level]) +
+                                  (views[level] == 1 ? " view)" : " views)"));
+        }
+    }
     // Children come after their parents: the deepest views are drawn first.
     for (std::size_t i = draw.nodes.size(); i-- > 1;) {
         const ViewNode& node = draw.nodes[i];
@@ -84,6 +99,9 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
         draw_view(f, static_cast<int>(i));
         target->resolve();
         f.textures[i] = std::move(*target);
+        if (ctx.pass_end) {
+            ctx.pass_end(level_names[static_cast<std::size_t>(node.level)].c_str());
+        }
     }
     frame.bind();
     begin_frame(ctx);

@@ -3,7 +3,10 @@
 // facing itself, depth N). Each view but the camera's is rendered into a
 // texture of its rectangle's size, deepest first; a view draws the scene
 // (culled with its culling pair), the links' quads, and the surfaces of its
-// children with their textures (mirror_composite shaders).
+// children with their textures (mirror_composite shaders). With
+// ctx.pass_end set, each view of level k >= 1 ends a pass named
+// "level k (n views)" (n: the level's views), so a GPU timer or fragment
+// counter gets every level's views under one name.
 #pragma once
 
 #include "render/pass_context.hpp"

@@ -35,8 +35,10 @@ namespace render {
 
 struct RenderOptions {
     // Called as each pass of render_into() ends, with the pass's name
-    // ("reflection" in the mirror effect, then "main view"); unset: not
-    // called (the window's GPU timer marks a timestamp there).
+    // ("reflection" in the mirror effect, then "main view"; the portal and
+    // recursion effects: "level k (n views)" after each view through k
+    // links, deepest first, then "main view"); unset: not called (the
+    // window's GPU timer and fragment counter mark their queries there).
     std::function<void(const char* pass)> pass_end;
     int width_px = 640;
     int height_px = 360;
