@@ -11,6 +11,7 @@
 
 #include "render/pass_context.hpp"
 #include "render/scene_pass.hpp"
+#include "render/target_pool.hpp"
 #include "plan/view_links.hpp"
 #include "plan/view_tree.hpp"
 
@@ -28,6 +29,9 @@ struct RecursionDraw {
     const std::vector<ViewLink>& links; // their surfaces are instances of `link_scene`
     const GpuScene& link_scene;         // link_scene(links) uploaded
     glm::vec3 tint{0.92f, 0.95f, 1.0f}; // a mirror's reflection times this; portals show theirs untinted
+    // The views' targets come from here and go back when composited
+    // (end_frame() at the end); null: made and freed per view.
+    TargetPool* targets = nullptr;
 };
 
 // Per level (index = level) what draw_recursion_frame() drew.

@@ -13,6 +13,7 @@
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
+#include "render/target_pool.hpp"
 #include "plan/scene_fit.hpp"
 #include "plan/link_moves.hpp"
 #include "plan/view_links.hpp"
@@ -135,6 +136,8 @@ private:
     // [0] portal pair, [1] facing mirrors, [2] facing portal. Mutable: the
     // links follow each frame's camera (placed by link_group()).
     mutable std::vector<LinkGroup> link_groups_;
+    // The recursion views' targets, kept from frame to frame (mutable like the links).
+    mutable TargetPool recursion_targets_;
     frustum::Result<const LinkGroup*> link_group(Effect effect, const RenderOptions& options,
                                                  const frustum::MatrixPair<float>& camera) const;
     WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame
