@@ -38,6 +38,16 @@ std::string_view to_string(Api api) {
     return api == Api::Gles ? "OpenGL ES" : "OpenGL core";
 }
 
+frustum::Status check_requested_version(Api api, const Version& version, const char* where) {
+    const bool es = api == Api::Gles;
+    const Version lowest = es ? Version{3, 0} : Version{3, 2};
+    if (version.major > lowest.major || (version.major == lowest.major && version.minor >= lowest.minor)) {
+        return {};
+    }
+    return frustum::Error{std::string(where) + (es ? ": gles_version must be >= 3.0, got " : ": gl_version must be >= 3.2 (core profile), got ") +
+                          std::to_string(version.major) + "." + std::to_string(version.minor)};
+}
+
 bool contains_token(std::string_view list, std::string_view token) {
     for (std::size_t start = 0; !token.empty() && start <= list.size();) {
         const std::size_t end = std::min(list.find(' ', start), list.size());

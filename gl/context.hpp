@@ -64,6 +64,11 @@ struct ContextInfo {
     std::string extensions;   // every GL_EXTENSIONS entry, space-separated
 };
 
+// A version a backend may be asked for: OpenGL ES >= 3.0, core profile >=
+// 3.2; otherwise "<where>: gles_version must be >= 3.0, got 2.0" (or
+// "gl_version must be >= 3.2 (core profile)").
+frustum::Status check_requested_version(Api api, const Version& version, const char* where);
+
 // True when the space-separated `list` holds `token` as a whole entry
 // (extension strings: "GL_EXT" does not match "GL_EXT_clip_control").
 bool contains_token(std::string_view list, std::string_view token);

@@ -107,12 +107,10 @@ frustum::Result<std::unique_ptr<Context>> EglSurfacelessContext::create(
     const ContextOptions& options) {
     std::vector<Version> versions = {{3, 2}, {3, 1}, {3, 0}};
     if (options.gles_version) {
-        const Version v = *options.gles_version;
-        if (v.major < 3) {
-            return frustum::Error{std::string(kCreate) + ": gles_version must be >= 3.0, got " +
-                                  std::to_string(v.major) + "." + std::to_string(v.minor)};
+        if (auto checked = check_requested_version(Api::Gles, *options.gles_version, kCreate); !checked) {
+            return checked.take_error();
         }
-        versions = {v};
+        versions = {*options.gles_version};
     }
     if (!process_display()) {
         return frustum::Error{process_display().error()};

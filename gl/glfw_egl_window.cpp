@@ -111,10 +111,14 @@ GlfwEglWindow::~GlfwEglWindow() {
 }
 
 frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const WindowOptions& options) {
-    const Version version = options.context.gles_version.value_or(Version{3, 0});
-    if (version.major < 3) {
-        return frustum::Error{std::string(kCreate) + ": gles_version must be >= 3.0, got " +
-                              std::to_string(version.major) + "." + std::to_string(version.minor)};
+    const bool es = options.api == Api::Gles;
+    // Core 4.3: "#version 300 es" through ARB_ES3_compatibility (the OSMesa backend's lowest too).
+    const Version version = es ? options.context.gles_version.value_or(Version{3, 0})
+                               : options.context.gl_version.value_or(Version{4, 3});
+    const std::string api_version = std::string(to_string(options.api)) + " " + std::to_string(version.major) +
+                                    "." + std::to_string(version.minor);
+    if (auto checked = check_requested_version(options.api, version, kCreate); !checked) {
+        return checked.take_error();
     }
     if (options.width < 1 || options.height < 1) {
         return frustum::Error{std::string(kCreate) + ": width and height must be >= 1, got " +
@@ -126,7 +130,11 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
         return frustum::Error{init_failure()};
     }
     glfwDefaultWindowHints();
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CLIENT_API, es ? GLFW_OPENGL_ES_API : GLFW_OPENGL_API);
+    if (!es) {
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    }
     glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, version.major);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, version.minor);
@@ -138,8 +146,7 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
     glfwWindowHint(GLFW_STENCIL_BITS, 0);
     GLFWwindow* window = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
     if (window == nullptr) {
-        return frustum::Error{std::string(kCreate) + ": glfwCreateWindow failed for OpenGL ES " +
-                              std::to_string(version.major) + "." + std::to_string(version.minor) +
+        return frustum::Error{std::string(kCreate) + ": glfwCreateWindow failed for " + api_version +
                               " through EGL" + glfw_reason()};
     }
     // From here the destructor cleans up on every early return.
@@ -154,7 +161,7 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
         return frustum::Error{current.error()};
     }
     glfwSwapInterval(options.vsync ? 1 : 0);
-    if (auto ready = self->initialize(Api::Gles, kCreate); !ready) {
+    if (auto ready = self->initialize(options.api, kCreate); !ready) {
         return frustum::Error{ready.error()};
     }
     return {std::move(self)};

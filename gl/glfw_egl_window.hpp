@@ -1,5 +1,8 @@
 // A desktop window with an OpenGL ES 3 context made through EGL (GLFW with
-// GLFW_OPENGL_ES_API + GLFW_EGL_CONTEXT_API), as a gl::Context. Unlike the
+// GLFW_OPENGL_ES_API + GLFW_EGL_CONTEXT_API), or a desktop OpenGL core one
+// (GLFW_OPENGL_API, core profile, also through EGL), as a gl::Context. The
+// project's "#version 300 es" shaders compile on desktop 4.3+ core through
+// ARB_ES3_compatibility, as on the OSMesa backend. Unlike the
 // offscreen backends it has a visible default framebuffer (0), shown by
 // swap_buffers(). Input arrives as gl::InputEvent values (window_input.hpp);
 // no GLFW header appears here.
@@ -27,8 +30,12 @@ struct WindowOptions {
     std::string title = "frustum";
     int width = 640; // screen coordinates; the framebuffer may be larger (high DPI)
     int height = 360;
-    // gles_version: exact version to ask for, unset = 3.0 or later (the
-    // driver picks, e.g. 3.2). debug + debug_sink as for the offscreen contexts.
+    // Api::Gles: OpenGL ES; Api::GlCore: desktop OpenGL, core profile (it
+    // has GL_SAMPLES_PASSED, counting occlusion queries).
+    Api api = Api::Gles;
+    // gles_version (ES) / gl_version (core): the version to ask for, unset =
+    // 3.0 / 4.3 or later (the driver picks, e.g. 3.2 / 4.5). debug +
+    // debug_sink as for the offscreen contexts.
     ContextOptions context;
     bool vsync = true; // swap interval 1 (0: as fast as possible)
 };
@@ -44,7 +51,7 @@ public:
     // reason, e.g. "gl::GlfwEglWindow::create(): no display (DISPLAY is not
     // set; GLFW: X11: The DISPLAY environment variable is missing)" or
     // "gl::GlfwEglWindow::create(): glfwCreateWindow failed for OpenGL ES 3.0
-    // through EGL (GLFW: EGL: Failed to create context: ...)".
+    // through EGL (GLFW: EGL: Failed to create context: ...)" (or "OpenGL core 4.3").
     static frustum::Result<std::unique_ptr<GlfwEglWindow>> create(const WindowOptions& options);
 
     // Destroys the window and its context (GLFW stays initialized, see above).

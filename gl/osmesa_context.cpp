@@ -77,12 +77,10 @@ OsMesaContext::~OsMesaContext() {
 frustum::Result<std::unique_ptr<Context>> OsMesaContext::create(const ContextOptions& options) {
     std::vector<Version> versions = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
     if (options.gl_version) {
-        const Version v = *options.gl_version;
-        if (v.major < 3 || (v.major == 3 && v.minor < 2)) {
-            return frustum::Error{std::string(kCreate) + ": gl_version must be >= 3.2 (core profile), got " +
-                                  std::to_string(v.major) + "." + std::to_string(v.minor)};
+        if (auto checked = check_requested_version(Api::GlCore, *options.gl_version, kCreate); !checked) {
+            return checked.take_error();
         }
-        versions = {v};
+        versions = {*options.gl_version};
     }
     if (!osmesa_api()) {
         return frustum::Error{osmesa_api().error()};

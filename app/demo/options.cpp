@@ -242,6 +242,17 @@ std::vector<Option> session_rows() {
 
 std::vector<Option> window_rows() {
     return {
+        {"--context", "C",
+         "es: OpenGL ES 3 (default); gl: desktop OpenGL core 4.3+, whose\n"
+         "occlusion queries count the fragments of each pass (both through EGL)",
+         [](Settings& s, const std::string& v) -> std::optional<Failure> {
+             if (v != "es" && v != "gl") {
+                 return usage("unknown context " + quoted(v) + " (expected es or gl)");
+             }
+             s.context_api = v == "es" ? gl::Api::Gles : gl::Api::GlCore;
+             return std::nullopt;
+         },
+         kWindow, "gl", false},
         {"--inset", nullptr, "start with the frustum view inset shown (key F)",
          [](Settings& s, const std::string&) -> std::optional<Failure> {
              s.inset = true;

@@ -47,6 +47,7 @@ struct Settings : EffectSettings {
     std::vector<render::Effect> effects; // --effect (window: one, the first shown)
     int msaa_samples = gl::kAutomaticSamples; // --msaa N; default 4 or the context's maximum
     // window.
+    gl::Api context_api = gl::Api::Gles;   // --context es|gl: the window's OpenGL ES or desktop core context
     bool inset = false;                    // --inset: start with the frustum view inset shown
     bool help_overlay = false;             // --help-overlay: start with the key help shown
     bool panel = false;                    // --panel: start with the control panel shown

@@ -12,8 +12,9 @@ std::variant<HelpRequest, WindowRequest, Failure> parse_window_command_line(cons
 }
 
 std::string window_help_text() {
-    return "frustum-demo window: the effects live in a window (GLFW, OpenGL ES 3 through EGL),\n"
-           "drawn by the same renderer as `frustum-demo render`.\n"
+    return "frustum-demo window: the effects live in a window (GLFW, OpenGL ES 3 or, with\n"
+           "--context gl, desktop OpenGL core, through EGL), drawn by the same renderer as\n"
+           "`frustum-demo render`.\n"
            "\n"
            "usage:\n"
            "  frustum-demo window [options]\n"

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
@@ -290,6 +291,48 @@ void WindowPanel::geometry(const window::LiveNumbers& n) const {
     ImGui::TreePop();
 }
 
+namespace {
+
+// Per pass: GPU ms (timestamps) and samples passed (occlusion queries), joined by pass name.
+void pass_table(const PanelView& view) {
+    struct Row {
+        std::string pass;
+        std::optional<double> gpu_ms;
+        std::optional<std::uint64_t> samples;
+    };
+    std::vector<Row> rows;
+    for (const window::GpuTimer::PassTime& pass : view.gpu_passes) {
+        rows.push_back({pass.pass, pass.gpu_ms, std::nullopt});
+    }
+    for (const window::FragmentCounter::PassSamples& pass : view.fragment_passes) {
+        const auto same = std::find_if(rows.begin(), rows.end(), [&](const Row& row) { return row.pass == pass.pass; });
+        if (same != rows.end()) {
+            same->samples = pass.samples;
+        } else {
+            rows.push_back({pass.pass, std::nullopt, pass.samples});
+        }
+    }
+    if (rows.empty() || !ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+        return;
+    }
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("GPU ms");
+    ImGui::TableSetupColumn("samples");
+    ImGui::TableHeadersRow();
+    for (const Row& row : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        ImGui::TextUnformatted(row.pass.c_str());
+        ImGui::TableSetColumnIndex(1);
+        row.gpu_ms ? ImGui::Text("%.3f", *row.gpu_ms) : ImGui::TextDisabled("-");
+        ImGui::TableSetColumnIndex(2);
+        row.samples ? ImGui::Text("%llu", static_cast<unsigned long long>(*row.samples)) : ImGui::TextDisabled("-");
+    }
+    ImGui::EndTable();
+}
+
+} // namespace
+
 void WindowPanel::numbers(const PanelView& view) const {
     if (!view.numbers || !ImGui::CollapsingHeader("numbers", ImGuiTreeNodeFlags_DefaultOpen)) {
         return;
@@ -316,13 +359,14 @@ void WindowPanel::numbers(const PanelView& view) const {
     }
     if (view.gpu_ms) {
         ImGui::Text("frame GPU time: %.3f ms (timer query)", *view.gpu_ms);
-        for (const window::GpuTimer::PassTime& pass : view.gpu_passes) {
-            ImGui::Text("  %s: %.3f ms GPU (timestamps)", pass.pass.c_str(), pass.gpu_ms);
-        }
     } else {
         ImGui::Text("frame: %.3f ms CPU wall time (%s)", view.paint_cpu_ms,
                     view.gpu_timer_available ? "timer result pending" : "no GPU timer query in this context");
     }
+    if (view.fragments_unavailable) {
+        ImGui::TextWrapped("fragments: %s", view.fragments_unavailable->c_str());
+    }
+    pass_table(view);
 }
 
 } // namespace demo

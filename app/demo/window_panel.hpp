@@ -12,6 +12,7 @@
 #include "demo/panel_command_line.hpp"
 
 #include <window/controls.hpp>
+#include <window/fragment_counter.hpp>
 #include <window/gpu_timer.hpp>
 #include <window/live_numbers.hpp>
 
@@ -31,6 +32,8 @@ struct PanelView {
     std::vector<window::GpuTimer::PassTime> gpu_passes; // that frame's passes (timestamp queries)
     double paint_cpu_ms = 0.0;     // CPU wall time of the frame's GL calls
     bool gpu_timer_available = false;
+    std::vector<window::FragmentCounter::PassSamples> fragment_passes; // samples passed per pass (desktop GL)
+    std::optional<std::string> fragments_unavailable; // why there are none (OpenGL ES)
     std::optional<std::string> notice; // why an effect was not drawn
     float mirror_size_m = 0.0f; // window::ControlScene's; 0: no mirror sliders
     float scene_radius_m = 1.0f; // the recursion mirrors' push sliders span half of it either way

@@ -13,6 +13,7 @@
 #include <window/controls.hpp>
 #include <window/frame.hpp>
 #include <window/frame_clock.hpp>
+#include <window/fragment_counter.hpp>
 #include <window/frame_painter.hpp>
 #include <window/gpu_timer.hpp>
 #include <window/imgui_layer.hpp>
@@ -43,6 +44,7 @@ struct WindowSession : Session {
     std::optional<window::FramePainter> painter;
     std::unique_ptr<window::ImGuiLayer> imgui; // the panel and the key help
     std::optional<window::GpuTimer> timer;
+    std::optional<window::FragmentCounter> fragments; // desktop GL (--context gl) only
     EffectSetup effects; // the effect options, with what they leave unset derived from the scene
 };
 
@@ -59,6 +61,7 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
     options.width = request.width_px;
     options.height = request.height_px;
     options.vsync = !request.frames; // scripted runs go as fast as they can
+    options.api = request.context_api;
     options.context = context_options(request, note);
     const auto open_window = [&]() -> frustum::Result<std::unique_ptr<gl::Context>> {
         auto window = gl::GlfwEglWindow::create(options);
@@ -92,6 +95,7 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
     }
     session->imgui = std::move(*imgui);
     session->timer.emplace(*session->window, *session->fn);
+    session->fragments.emplace(*session->window, *session->fn);
     return session;
 }
 
@@ -289,10 +293,15 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         frame->text.clear();
         const auto paint_start = std::chrono::steady_clock::now();
         s.timer->begin();
-        frame->options.pass_end = [&s](const char* pass) { s.timer->mark(pass); };
+        s.fragments->begin();
+        frame->options.pass_end = [&s](const char* pass) {
+            s.timer->mark(pass);
+            s.fragments->mark(pass);
+        };
         frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
                                       ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
                                       : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
+        s.fragments->end();
         s.timer->end();
         const double paint_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - paint_start).count();
@@ -335,6 +344,8 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 view.gpu_ms = s.timer->last_ms();
                 view.gpu_passes = s.timer->last_passes();
                 view.gpu_timer_available = s.timer->available();
+                view.fragment_passes = s.fragments->last_passes();
+                view.fragments_unavailable = s.fragments->unavailable_reason();
                 view.paint_cpu_ms = paint_ms;
                 view.notice = notice;
                 view.mirror_size_m = control_scene.mirror_size_m;

@@ -4,11 +4,18 @@
 
 #include <gl/errors.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
 namespace render {
 namespace {
+
+// A view's own target: its rectangle's size, sampled like the frame.
+gl::OffscreenTargetOptions view_target(const PassContext& ctx, const ViewNode& node) {
+    return {static_cast<int>(node.rect.width), static_cast<int>(node.rect.height), gl::ColorStorage::Texture,
+            gl::DepthFormat::Depth24, ctx.samples};
+}
 
 struct Frame {
     const PassContext& ctx;
@@ -46,9 +53,13 @@ void draw_view(Frame& f, int index) {
         const ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
         const ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
         const glm::vec3 tint = link.kind == ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
-        draw_reflection_surface(f.link_ctx, node.render, link.surface_instance,
-                                f.textures[static_cast<std::size_t>(c)]->color_texture(), child.surface_matrix, tint);
-        f.textures[static_cast<std::size_t>(c)].reset();
+        std::optional<gl::OffscreenTarget>& texture = f.textures[static_cast<std::size_t>(c)];
+        draw_reflection_surface(f.link_ctx, node.render, link.surface_instance, texture->color_texture(),
+                                child.surface_matrix, tint);
+        if (f.draw.targets) {
+            f.draw.targets->give_back(std::move(*texture), view_target(f.ctx, child));
+        }
+        texture.reset();
     }
 }
 
@@ -70,24 +81,44 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
         }
         stats->per_level.assign(static_cast<std::size_t>(levels), DrawCounts{});
     }
+    // ctx.pass_end hears "level k (n views)" as each view of level k >= 1
+    // ends (level 0, the camera's view, is the caller's "main view").
+    std::vector<std::string> level_names;
+    if (ctx.pass_end) {
+        std::vector<int> views;
+        for (const ViewNode& node : draw.nodes) {
+            views.resize(std::max(views.size(), static_cast<std::size_t>(node.level) + 1), 0);
+            ++views[static_cast<std::size_t>(node.level)];
+        }
+        for (std::size_t level = 0; level < views.size(); ++level) {
+            level_names.push_back("level " + std::to_string(level) + " (" + std::to_string(views[level]) +
+                                  (views[level] == 1 ? " view)" : " views)"));
+        }
+    }
     // Children come after their parents: the deepest views are drawn first.
     for (std::size_t i = draw.nodes.size(); i-- > 1;) {
         const ViewNode& node = draw.nodes[i];
-        auto target = gl::OffscreenTarget::create(
-            ctx.fn, {static_cast<int>(node.rect.width), static_cast<int>(node.rect.height), gl::ColorStorage::Texture,
-                     gl::DepthFormat::Depth24, ctx.samples});
+        const gl::OffscreenTargetOptions options = view_target(ctx, node);
+        auto target = draw.targets ? draw.targets->take(ctx.fn, options) : gl::OffscreenTarget::create(ctx.fn, options);
         if (!target) {
             return frustum::Error{"render::draw_recursion_frame(): level " + std::to_string(node.level) +
                                   " texture: " + target.error()};
         }
+        target->bind(); // a kept one is not bound yet (a new one is)
         begin_frame(ctx);
         draw_view(f, static_cast<int>(i));
         target->resolve();
         f.textures[i] = std::move(*target);
+        if (ctx.pass_end) {
+            ctx.pass_end(level_names[static_cast<std::size_t>(node.level)].c_str());
+        }
     }
     frame.bind();
     begin_frame(ctx);
     draw_view(f, 0);
+    if (draw.targets) {
+        draw.targets->end_frame();
+    }
     return gl::check_error(ctx.fn, "render::draw_recursion_frame()");
 }
 

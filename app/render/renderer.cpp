@@ -245,7 +245,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         if (!nodes) {
             return frustum::Error{nodes.error()};
         }
-        return draw_recursion_frame(ctx, frame, RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint});
+        return draw_recursion_frame(ctx, frame,
+                                    RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint, &recursion_targets_});
     }
     case Effect::Tiles:
         return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,

@@ -13,6 +13,7 @@
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/programs.hpp"
+#include "render/target_pool.hpp"
 #include "plan/scene_fit.hpp"
 #include "plan/link_moves.hpp"
 #include "plan/view_links.hpp"
@@ -35,8 +36,10 @@ namespace render {
 
 struct RenderOptions {
     // Called as each pass of render_into() ends, with the pass's name
-    // ("reflection" in the mirror effect, then "main view"); unset: not
-    // called (the window's GPU timer marks a timestamp there).
+    // ("reflection" in the mirror effect, then "main view"; the portal and
+    // recursion effects: "level k (n views)" after each view through k
+    // links, deepest first, then "main view"); unset: not called (the
+    // window's GPU timer and fragment counter mark their queries there).
     std::function<void(const char* pass)> pass_end;
     int width_px = 640;
     int height_px = 360;
@@ -133,6 +136,8 @@ private:
     // [0] portal pair, [1] facing mirrors, [2] facing portal. Mutable: the
     // links follow each frame's camera (placed by link_group()).
     mutable std::vector<LinkGroup> link_groups_;
+    // The recursion views' targets, kept from frame to frame (mutable like the links).
+    mutable TargetPool recursion_targets_;
     frustum::Result<const LinkGroup*> link_group(Effect effect, const RenderOptions& options,
                                                  const frustum::MatrixPair<float>& camera) const;
     WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame

@@ -1,5 +1,7 @@
 #include "window/gpu_timer.hpp"
 
+#include "window/pass_rows.hpp"
+
 namespace window {
 namespace {
 
@@ -58,7 +60,8 @@ std::optional<double> GpuTimer::read_stamps(Stamps& stamps) {
         }
         if (valid) {
             for (std::size_t i = 0; i < stamps.names.size(); ++i) {
-                last_passes_.push_back({stamps.names[i], static_cast<double>(ns[i + 1] - ns[i]) * 1e-6});
+                add_to_pass(last_passes_, stamps.names[i], &PassTime::gpu_ms,
+                            static_cast<double>(ns[i + 1] - ns[i]) * 1e-6);
             }
             frame_ms = static_cast<double>(ns.back() - ns.front()) * 1e-6;
         }

@@ -6,8 +6,9 @@
 // of the same calls instead, labelled as such.
 // Per pass: a GL_TIMESTAMP query (glQueryCounter) at begin(), at each
 // mark(pass) (render::RenderOptions::pass_end) and at end(); a pass's time
-// is the difference of its stamps, read with the frame's, and where the
-// stamps answer, the frame's time is its last stamp minus its first.
+// is the difference of its stamps, read with the frame's (passes of the
+// same name summed, window/pass_rows.hpp), and where the stamps answer, the
+// frame's time is its last stamp minus its first.
 #pragma once
 
 #include <gl/context.hpp>
@@ -37,7 +38,7 @@ public:
         std::string pass;
         double gpu_ms = 0.0;
     };
-    // That frame's passes, in order (empty: no marks, or no timestamps).
+    // That frame's passes, in order, one row per name (empty: no marks, or no timestamps).
     const std::vector<PassTime>& last_passes() const { return last_passes_; }
 
 private:

@@ -17,7 +17,8 @@
 // context has it, and samples written), views, primitives drawn and culled,
 // culled per level. cpu/<layout>/recursion_plan: plan_view_tree() alone
 // (every pair, rectangle and culling pair of the frame). target/...: the
-// cost of a full-viewport view's texture, created per frame or kept.
+// cost of a full-viewport view's texture, created per frame or kept;
+// .../kept_targets: the frame with its views' targets kept (TargetPool).
 #include "bench_recursion_room.hpp"
 #include "bench_render_setup.hpp"
 
@@ -120,12 +121,16 @@ Gpu& gpu() {
     return s;
 }
 
-void frame_case(benchmark::State& state, const std::string& name, int depth, render::ViewBounds bounds) {
+// kept_targets: the views' targets from a render::TargetPool kept across
+// the frames (the renderer's way), else made and freed per view.
+void frame_case(benchmark::State& state, const std::string& name, int depth, render::ViewBounds bounds,
+                bool kept_targets = false) {
     Gpu& s = gpu();
     const Gpu::Drawn& d = s.drawn.at(name);
     const auto nodes = plan(layout(name), depth, bounds);
     const render::PassContext ctx = d.own ? d.own->pass_context(*s.gpu->depth, render::Lighting{}) : s.gpu->pass();
-    const render::RecursionDraw draw{nodes, d.links, *d.quads, glm::vec3(1.0f)};
+    render::TargetPool pool;
+    const render::RecursionDraw draw{nodes, d.links, *d.quads, glm::vec3(1.0f), kept_targets ? &pool : nullptr};
     render::RecursionStats stats;
     const auto draw_once = [&](render::RecursionStats* out) {
         if (auto status = render::draw_recursion_frame(ctx, *s.frame, draw, out); !status) {
@@ -226,6 +231,16 @@ int main(int argc, char** argv) {
                                          })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
+            if (depth == 2 || depth == 4) {
+                for (const auto& [bounds, label] : {std::pair{render::ViewBounds::Tight, "tight"},
+                                                    std::pair{render::ViewBounds::FullViewport, "full"}}) {
+                    benchmark::RegisterBenchmark(
+                        ("recursion/" + name + "/" + label + "/depth:" + d + "/kept_targets").c_str(),
+                        [name, depth, bounds = bounds](benchmark::State& s) { frame_case(s, name, depth, bounds, true); })
+                        ->Unit(benchmark::kMillisecond)
+                        ->UseRealTime();
+                }
+            }
             if (depth == 0) {
                 continue;
             }

@@ -11,6 +11,7 @@
 #include <frustum/reflect.hpp>
 #include <frustum/rigid.hpp>
 #include <gl/offscreen_target.hpp>
+#include <image/compare.hpp>
 #include <render/recursion_pass.hpp>
 #include <render/scene_pass.hpp>
 #include <plan/view_links.hpp>
@@ -86,14 +87,15 @@ image::Image read(const gl::OffscreenTarget& target) {
     return std::move(*picture);
 }
 
-// The recursion frame through `links` at `depth`, tint 1.
+// The recursion frame through `links` at `depth`, tint 1; the views' targets from `pool` when given.
 image::Image recursion_frame(const Setup& s, const std::vector<render::ViewLink>& links, const render::GpuScene& quads,
-                             const std::vector<render::ViewNode>& nodes) {
+                             const std::vector<render::ViewNode>& nodes, render::TargetPool* pool = nullptr) {
     const gl::Functions& fn = s.r->env->fn;
     auto frame = gl::OffscreenTarget::create(fn, {kW, kH});
     REQUIRE_MESSAGE(frame.ok(), frame.error());
     const render::PassContext ctx = s.r->renderer->pass_context(*s.depth, render::Lighting{});
-    const auto status = render::draw_recursion_frame(ctx, *frame, render::RecursionDraw{nodes, links, quads, glm::vec3(1.0f)});
+    const auto status =
+        render::draw_recursion_frame(ctx, *frame, render::RecursionDraw{nodes, links, quads, glm::vec3(1.0f), pool});
     REQUIRE_MESSAGE(status.ok(), status.error());
     return read(*frame);
 }
@@ -346,6 +348,43 @@ TEST_CASE("recursion level k of two facing mirrors equals the scene reflected k 
 
 TEST_CASE("recursion level k of a portal facing itself equals a direct render from the k-times-portalled camera") {
     check_levels(render::LinkSet::Portals, 3);
+}
+
+// render::TargetPool (the renderer's, kept across frames): the same
+// pixels as targets made per view; the second frame of the same views makes
+// no target; a frame that takes none frees them all.
+TEST_CASE("kept view targets: the same pixels, none made for a second frame of the same views") {
+    scene::Scene s = small_scene();
+    auto setup = make_setup(s);
+    if (!setup) {
+        return;
+    }
+    auto links = render::place_facing_links(setup->cameras.main.pair, s.world_bounds, render::LinkSet::Mirrors);
+    REQUIRE_MESSAGE(links.ok(), links.error());
+    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    REQUIRE_MESSAGE(quads.ok(), quads.error());
+    auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {3, kW, kH, render::ViewBounds::Tight});
+    REQUIRE_MESSAGE(nodes.ok(), nodes.error());
+    REQUIRE(nodes->size() > 2);
+    const image::Image made_per_view = recursion_frame(*setup, *links, *quads, *nodes);
+    render::TargetPool pool;
+    const image::Image first = recursion_frame(*setup, *links, *quads, *nodes, &pool);
+    const std::size_t made = pool.made();
+    MESSAGE((nodes->size() - 1) << " views, " << made << " targets made");
+    CHECK(made >= 1);
+    CHECK(made <= nodes->size() - 1);
+    CHECK(pool.free_count() == made);
+    const image::Image second = recursion_frame(*setup, *links, *quads, *nodes, &pool);
+    CHECK(pool.made() == made);
+    for (const image::Image* frame : {&first, &second}) {
+        const auto diff = image::compare(*frame, made_per_view, 0);
+        REQUIRE_MESSAGE(diff.ok(), diff.error());
+        CHECK(diff->pixels_over == 0);
+    }
+    auto camera_only = render::plan_view_tree(setup->cameras.main.pair, *links, {0, kW, kH, render::ViewBounds::Tight});
+    REQUIRE_MESSAGE(camera_only.ok(), camera_only.error());
+    recursion_frame(*setup, *links, *quads, *camera_only, &pool);
+    CHECK(pool.free_count() == 0);
 }
 
 TEST_CASE("nothing behind a mirror or an exit portal appears at any level") {

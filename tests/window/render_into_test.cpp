@@ -1,6 +1,6 @@
 // Renderer::render_into (what the window draws with) and move_mirror on an
 // offscreen context; skipped with the backend's error when there is none.
-#include "../plan/showcase.hpp"
+#include "rig.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,29 +19,8 @@
 
 namespace {
 
-// Members die in reverse: renderer, table, context.
-struct Rig {
-    std::unique_ptr<gl::Context> context;
-    std::unique_ptr<gl::Functions> fn;
-    std::optional<render::Renderer> renderer;
-};
-
-std::unique_ptr<Rig> make_rig() {
-    auto context = gl::create_offscreen_context_with_fallback({});
-    if (!context) {
-        MESSAGE("skipping: " << context.error());
-        return nullptr;
-    }
-    auto rig = std::make_unique<Rig>();
-    rig->context = std::move(*context);
-    auto fn = gl::Functions::load(*rig->context);
-    REQUIRE_MESSAGE(fn.ok(), fn.error());
-    rig->fn = std::make_unique<gl::Functions>(*fn);
-    auto renderer = render::Renderer::create(*rig->context, *rig->fn, render_test::showcase());
-    REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-    rig->renderer.emplace(std::move(*renderer));
-    return rig;
-}
+using window_test::make_rig;
+using window_test::Rig;
 
 render::RenderOptions options() {
     render::RenderOptions o;

@@ -54,6 +54,28 @@ TEST_CASE("the window's screenshot matches the offscreen renderer for every effe
     }
 }
 
+// --context gl: a desktop OpenGL core context (through EGL, as the ES one)
+// draws the same frames, the panel shown and hidden again (P twice) as in
+// panel_test.cpp; the mirror effect (clip control, the reflection pass) and
+// the recursion effect (its levels marked as passes).
+TEST_CASE("--context gl: the window with the panel hidden equals render") {
+    for (const char* effect : {"mirror", "recursion"}) {
+        CAPTURE(effect);
+        TempDir dir;
+        const std::string shot = (dir / "window.png").string();
+        const auto child = run_window_under_xvfb({"--context", "gl", "--size", "256x144", "--effect", effect, "--panel",
+                                                  "--keys", "P,P,P", "--frames", "4", "--screenshot", shot, "--verbose"});
+        if (!child) {
+            return;
+        }
+        REQUIRE_MESSAGE(child->exit_status == 0, child->err);
+        // --verbose names the context by its GL_VERSION, which starts with "OpenGL ES" only on ES.
+        CHECK_MESSAGE(child->err.find("window: context: ") != std::string::npos, child->err);
+        CHECK_MESSAGE(child->err.find("window: context: OpenGL ES") == std::string::npos, child->err);
+        check_similar(read(shot), render_offscreen(dir, effect, "256x144"), effect);
+    }
+}
+
 // The effect options set where the window starts: --lens-power and --tiles
 // (the viewer's state, which the keys then change) as much as the others;
 // --depth minus_one_to_one the [-1, 1] conversion (the default takes clip
