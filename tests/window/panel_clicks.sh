@@ -12,13 +12,10 @@
 set -euo pipefail
 demo=$1
 out=$2
-"$demo" window --size 480x360 --panel &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
 script=panel_clicks.sh
 # shellcheck source=panel_steps.sh
 source "$(dirname "$0")/panel_steps.sh"
+open_window --size 480x360 --panel
 settle
 shot a.png
 click 100 76 # the --effect list (below --camera)
@@ -31,6 +28,4 @@ shot c.png
 click 36 351 # its left end: 0
 settle
 shot d.png
-xdotool key --window "$wid" Escape
-wait $pid
-trap - EXIT
+finish

@@ -1,6 +1,21 @@
 # Steps shared by the xdotool scripts of the panel tests (panel_clicks.sh,
-# scene_clicks.sh), sourced after they set $wid (the window), $out (the
+# scene_clicks.sh), sourced after they set $demo (frustum-demo), $out (the
 # folder for screenshots) and $script (their name, for messages).
+#
+# open_window ARGS...: starts `frustum-demo window ARGS...` in the
+# background ($pid, killed if the script fails) and finds its window ($wid);
+# finish: Esc, and waits for the program to end.
+open_window() {
+  "$demo" window "$@" &
+  pid=$!
+  trap 'kill $pid 2>/dev/null || true' EXIT
+  wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
+}
+finish() {
+  xdotool key --window "$wid" Escape
+  wait "$pid"
+  trap - EXIT
+}
 #
 # settle: the pointer leaves the panel (no tooltip over the view), then the
 # window is read until two reads 0.3 s apart agree (nothing moves in the

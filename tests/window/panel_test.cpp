@@ -15,6 +15,7 @@
 #include <demo/window_panel.hpp>
 
 #include <algorithm>
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -34,6 +35,37 @@ constexpr int kDiffers = 200;
 // The part of a screenshot right of the panel.
 image::Image beside_panel(const image::Image& shot) { return crop(shot, kPanelPx, 0, shot.width, shot.height); }
 image::Image panel_part(const image::Image& shot) { return crop(shot, 0, 0, kPanelPx, shot.height); }
+
+struct ScriptShots {
+    window_test::Child child;
+    image::Image a, b, c, d; // the script's a.png .. d.png
+};
+
+// tests/window/<script> FRUSTUM_DEMO OUT_DIR args... under xvfb-run, which
+// must end with 0, and its four screenshots; empty (with a message) when
+// xvfb-run, xdotool or ImageMagick's import is missing.
+std::optional<ScriptShots> run_panel_script(const std::string& script, const TempDir& dir,
+                                            const std::vector<std::string>& args = {}) {
+    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
+    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
+        window_test::find_on_path("import").empty()) {
+        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+        return std::nullopt;
+    }
+    std::vector<std::string> all{"-a", "-s", "-screen 0 1024x768x24", "bash",
+                                 std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/" + script, window_test::kDemo,
+                                 (dir / "").string()};
+    all.insert(all.end(), args.begin(), args.end());
+    ScriptShots shots;
+    shots.child = window_test::run(xvfb_run, all);
+    REQUIRE_MESSAGE(shots.child.exit_status == 0, shots.child.err);
+    shots.a = read(dir / "a.png");
+    shots.b = read(dir / "b.png");
+    shots.c = read(dir / "c.png");
+    shots.d = read(dir / "d.png");
+    REQUIRE(shots.a.width == 480);
+    return shots;
+}
 
 } // namespace
 
@@ -62,20 +94,12 @@ TEST_CASE("the panel covers only its region; hidden again the window equals rend
 }
 
 TEST_CASE("clicks on the panel change the effect and the lens power; a refused value changes nothing") {
-    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
-    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
-        window_test::find_on_path("import").empty()) {
-        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+    TempDir dir;
+    const auto child = run_panel_script("panel_clicks.sh", dir);
+    if (!child) {
         return;
     }
-    TempDir dir;
-    const std::string script = std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/panel_clicks.sh";
-    const window_test::Child child = window_test::run(
-        xvfb_run, {"-a", "-s", "-screen 0 1024x768x24", "bash", script, window_test::kDemo, (dir / "").string()});
-    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
-    const image::Image a = read(dir / "a.png"), b = read(dir / "b.png"), c = read(dir / "c.png"),
-                       d = read(dir / "d.png");
-    REQUIRE(a.width == 480);
+    const image::Image &a = child->a, &b = child->b, &c = child->c, &d = child->d;
     // The effect list's "lens": the view is render's lens effect.
     check_similar(beside_panel(b), beside_panel(render_offscreen(dir, "lens", "480x360")), "lens chosen");
     CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
@@ -88,12 +112,6 @@ TEST_CASE("clicks on the panel change the effect and the lens power; a refused v
 }
 
 TEST_CASE("the scene file control loads another sample, and a missing file leaves the old one on screen") {
-    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
-    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
-        window_test::find_on_path("import").empty()) {
-        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
-        return;
-    }
     TempDir dir;
     const std::string box = std::string(FRUSTUM_SAMPLES_DIR) + "/Box/Box.gltf";
     const std::string duck = std::string(FRUSTUM_SAMPLES_DIR) + "/Duck/Duck.gltf";
@@ -103,14 +121,11 @@ TEST_CASE("the scene file control loads another sample, and a missing file leave
     REQUIRE(at != beside.end());
     const long index = at - beside.begin();
     REQUIRE(index < 8);
-    const std::string script = std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/scene_clicks.sh";
-    const window_test::Child child =
-        window_test::run(xvfb_run, {"-a", "-s", "-screen 0 1024x768x24", "bash", script, window_test::kDemo,
-                                    (dir / "").string(), box, std::to_string(index), "/nonexistent/missing.gltf"});
-    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
-    const image::Image a = read(dir / "a.png"), b = read(dir / "b.png"), c = read(dir / "c.png"),
-                       d = read(dir / "d.png");
-    REQUIRE(a.width == 480);
+    const auto child = run_panel_script("scene_clicks.sh", dir, {box, std::to_string(index), "/nonexistent/missing.gltf"});
+    if (!child) {
+        return;
+    }
+    const image::Image &a = child->a, &b = child->b, &c = child->c, &d = child->d;
     // Duck chosen: the view changes, and with the panel hidden it is render's Duck.
     CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
     const image::Image rendered = render_offscreen(dir, "plain", "480x480", {"--scene", duck});
@@ -119,7 +134,7 @@ TEST_CASE("the scene file control loads another sample, and a missing file leave
     // The missing file: its error on top of the panel, the Duck still on screen.
     check_similar(beside_panel(c), beside_panel(b), "missing file");
     CHECK(pixels_differing(crop(b, 0, 20, kPanelPx, 45), crop(c, 0, 20, kPanelPx, 45)) > kDiffers);
-    CHECK(child.err.find("does not exist") == std::string::npos); // shown in the panel, not printed
+    CHECK(child->child.err.find("does not exist") == std::string::npos); // shown in the panel, not printed
 }
 
 } // TEST_SUITE

@@ -18,13 +18,10 @@ out=$2
 start=$3
 index=$4
 missing=$5
-"$demo" window --scene "$start" --effect plain --size 480x480 --panel &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
 script=scene_clicks.sh
 # shellcheck source=panel_steps.sh
 source "$(dirname "$0")/panel_steps.sh"
+open_window --scene "$start" --effect plain --size 480x480 --panel
 settle
 shot a.png
 click 80 398 # the "beside it" list
@@ -40,6 +37,4 @@ shot c.png
 xdotool key --window "$wid" p
 settle
 shot d.png
-xdotool key --window "$wid" Escape
-wait $pid
-trap - EXIT
+finish
