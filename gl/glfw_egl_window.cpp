@@ -57,6 +57,9 @@ KeyPressed translate_key(int key, int mods, bool repeat) {
     case GLFW_KEY_PAGE_UP: event.key = Key::PageUp; return event;
     case GLFW_KEY_PAGE_DOWN: event.key = Key::PageDown; return event;
     case GLFW_KEY_HOME: event.key = Key::Home; return event;
+    case GLFW_KEY_BACKSPACE: event.key = Key::Backspace; return event;
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER: event.key = Key::Enter; return event;
     case GLFW_KEY_KP_ADD: event.key = Key::Character; event.character = '+'; return event;
     case GLFW_KEY_KP_SUBTRACT: event.key = Key::Character; event.character = '-'; return event;
     default: break;
@@ -82,6 +85,9 @@ struct GlfwCallbacks {
         if (action == GLFW_PRESS || action == GLFW_REPEAT) {
             self(window).pending_.emplace_back(translate_key(key, mods, action == GLFW_REPEAT));
         }
+    }
+    static void character(GLFWwindow* window, unsigned int codepoint) {
+        self(window).pending_.emplace_back(TextEntered{codepoint});
     }
     static void mouse_button(GLFWwindow* window, int button, int action, int mods) {
         if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT && button != GLFW_MOUSE_BUTTON_MIDDLE) {
@@ -153,6 +159,7 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
     std::unique_ptr<GlfwEglWindow> self(new GlfwEglWindow(options.context, window));
     glfwSetWindowUserPointer(window, self.get());
     glfwSetKeyCallback(window, GlfwCallbacks::key);
+    glfwSetCharCallback(window, GlfwCallbacks::character);
     glfwSetMouseButtonCallback(window, GlfwCallbacks::mouse_button);
     glfwSetCursorPosCallback(window, GlfwCallbacks::cursor);
     glfwSetScrollCallback(window, GlfwCallbacks::scroll);

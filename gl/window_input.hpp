@@ -18,6 +18,8 @@ enum class Key {
     PageUp,
     PageDown,
     Home,
+    Backspace, // text fields (the window panel's scene file)
+    Enter,     // the main one or the keypad's
 };
 
 struct Modifiers {
@@ -58,12 +60,18 @@ struct Scrolled {
     double dy = 0.0;
 };
 
+// A character typed (GLFW's character callback: after the keyboard layout
+// and Shift), for text fields; the key itself also arrives as KeyPressed.
+struct TextEntered {
+    unsigned codepoint = 0; // Unicode
+};
+
 // The drawable size in pixels (what glViewport needs); 0 x 0 while minimized.
 struct FramebufferResized {
     int width_px = 0;
     int height_px = 0;
 };
 
-using InputEvent = std::variant<KeyPressed, MouseButtonChanged, CursorMoved, Scrolled, FramebufferResized>;
+using InputEvent = std::variant<KeyPressed, MouseButtonChanged, CursorMoved, Scrolled, FramebufferResized, TextEntered>;
 
 } // namespace gl

@@ -6,19 +6,27 @@
 
 namespace demo {
 
-std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size) {
+std::variant<LoadedScene, Failure> load_scene(const Settings& settings) {
     scene::LoadOptions load_options;
     load_options.budget = settings.budget;
     auto scene = scene::load_gltf(settings.scene_path, load_options);
     if (!scene) {
         return runtime(scene.error());
     }
-    session.scene = std::move(*scene);
-    auto camera_index = render::find_camera(session.scene, settings.camera);
+    auto camera_index = render::find_camera(*scene, settings.camera);
     if (!camera_index) {
         return Failure{ExitStatus::UsageError, camera_index.error()};
     }
-    session.camera_index = *camera_index;
+    return LoadedScene{std::move(*scene), *camera_index};
+}
+
+std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size) {
+    auto loaded = load_scene(settings);
+    if (auto* failure = std::get_if<Failure>(&loaded)) {
+        return *failure;
+    }
+    session.scene = std::move(std::get<LoadedScene>(loaded).scene);
+    session.camera_index = std::get<LoadedScene>(loaded).camera_index;
     if (cameras_at_size) {
         // Stereo: the cameras are made for one eye's half of the image.
         const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;

@@ -40,8 +40,16 @@ struct Session {
     std::optional<render::Renderer> renderer;
 };
 
-// The scene and the camera: an unreadable scene is a runtime failure, an
-// unknown --camera a usage error. With `cameras_at_size`, also the cameras
+// --scene within the --max-* budget and its --camera, as every command
+// loads them (and the window's panel a new scene file): an unreadable scene
+// is a runtime failure, an unknown --camera a usage error.
+struct LoadedScene {
+    scene::Scene scene;
+    int camera_index = -1;
+};
+std::variant<LoadedScene, Failure> load_scene(const Settings& settings);
+
+// load_scene() into the session. With `cameras_at_size`, also the cameras
 // for a --size frame.
 std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size);
 

@@ -78,8 +78,9 @@ std::vector<CaptionLine> effect_caption(render::Effect effect, const render::Ren
         const auto frame = frustum::near_plane_frame(camera);
         const auto lens = render::fit_lens(camera, scene.lens, scene.world_bounds, o.fit, o.lens_power);
         if (frame && lens) {
-            lines.push_back({"at " + number_text(lens->center_m.x / frame->half_width_m) + "," +
-                             number_text(lens->center_m.y / frame->half_height_m) + " r " +
+            // The centre in the frame's half sizes (scale 1): a float zero prints as 0.
+            lines.push_back({"at " + number_text(lens->center_m.x / frame->half_width_m, 1.0) + "," +
+                             number_text(lens->center_m.y / frame->half_height_m, 1.0) + " r " +
                              number_text(lens->radius_m / frame->half_height_m)});
         }
         return lines;

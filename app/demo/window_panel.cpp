@@ -1,5 +1,7 @@
 #include "demo/window_panel.hpp"
 
+#include "demo/scene_files.hpp"
+
 #include <plan/number_text.hpp>
 
 #include <imgui.h>
@@ -10,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 namespace demo {
 namespace {
@@ -57,7 +60,60 @@ void tooltip(const std::string& help) {
     }
 }
 
+// Puts `text` into a text field's buffer (cut to fit, always terminated).
+void fill(std::array<char, 1024>& field, const std::string& text) {
+    const std::size_t n = std::min(text.size(), field.size() - 1);
+    std::copy(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(n), field.begin());
+    field[n] = '\0';
+}
+
 } // namespace
+
+WindowPanel::WindowPanel(std::vector<std::string> args, Settings settings)
+    : line_(std::move(args)), accepted_(line_), current_(std::move(settings)) {
+    fill(scene_field_, current_.scene_path);
+}
+
+// The scene file: the path typed (Enter or the load button) or one of the
+// files beside the current one goes on the command line as --scene,
+// without the options that name parts of the old scene (--camera,
+// --mirror-plane, --mirror-rect: the new one's are derived). True when
+// the command line changed; the window loads it when it is checked.
+bool WindowPanel::scene_file() {
+    if (!ImGui::CollapsingHeader("scene file", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return false;
+    }
+    ImGui::PushID("scene file");
+    ImGui::PushItemWidth(-60.0f);
+    bool load = ImGui::InputText("##path", scene_field_.data(), scene_field_.size(),
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    ImGui::PopItemWidth();
+    tooltip("--scene: a glTF 2.0 file (.gltf or .glb); a click selects it all, Enter or load opens it");
+    ImGui::SameLine();
+    load = ImGui::Button("load") || load;
+    if (ImGui::BeginCombo("beside it", std::filesystem::path(current_.scene_path).filename().string().c_str())) {
+        const std::vector<std::string> files = scene_files_beside(current_.scene_path); // read while open
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            ImGui::PushID(static_cast<int>(i));
+            if (ImGui::Selectable(std::filesystem::path(files[i]).filename().string().c_str(),
+                                  files[i] == current_.scene_path)) {
+                fill(scene_field_, files[i]);
+                load = true;
+            }
+            ImGui::PopID();
+        }
+        ImGui::EndCombo();
+    }
+    tooltip("the .gltf and .glb files in the scene's folder and the folders next to it");
+    ImGui::PopID();
+    if (load) {
+        line_.set("--scene", scene_field_.data());
+        for (const char* name : {"--camera", "--mirror-plane", "--mirror-rect"}) {
+            line_.remove(name);
+        }
+    }
+    return load;
+}
 
 void WindowPanel::follow(const window::ViewerState& state) {
     // The first time, every followed row goes on the command line, so its widget shows the value.
@@ -212,6 +268,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     if (ImGui::CollapsingHeader("the other effects' options")) {
         rows([&](std::optional<render::Effect> effect) { return effect && effect != shown; });
     }
+    edited = scene_file() || edited;
     if (edited) {
         auto parsed = line_.parse();
         auto* settings = std::get_if<Settings>(&parsed);

@@ -1,7 +1,8 @@
 // The window's control panel (Dear ImGui; key P shows or hides it): one
 // widget per row of the option table that window accepts and that names a
 // PanelControl (demo/effect_options.hpp), plus its flags as checkboxes, the
-// mirror's placement, a screenshot button, and the live numbers of the
+// mirror's placement, the scene file (a text field, a load button and the
+// files beside it), a screenshot button, and the live numbers of the
 // frame. A changed widget edits the window's command line
 // (demo/panel_command_line.hpp), which is re-parsed by the same code as at
 // start-up: a value the row refuses shows the row's message in the panel
@@ -16,6 +17,7 @@
 #include <window/gpu_timer.hpp>
 #include <window/live_numbers.hpp>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -39,7 +41,8 @@ struct PanelView {
     float scene_radius_m = 1.0f; // the recursion mirrors' push sliders span half of it either way
     std::vector<std::string> camera_names; // the scene's cameras, for --camera (index order)
     // What only the running window can check (e.g. --msaa against the
-    // context's GL_MAX_SAMPLES): a message refuses the parsed settings.
+    // context's GL_MAX_SAMPLES, or that another --scene loads): a message
+    // refuses the parsed settings.
     std::function<std::optional<std::string>(const Settings&)> check;
 };
 
@@ -51,8 +54,7 @@ struct PanelOutcome {
 class WindowPanel {
 public:
     // args: the window's command line (args[0] "window"); settings: its parse.
-    WindowPanel(std::vector<std::string> args, Settings settings)
-        : line_(std::move(args)), accepted_(line_), current_(std::move(settings)) {}
+    WindowPanel(std::vector<std::string> args, Settings settings);
 
     // Rows the keys change (effect, tiles, mirror, lens power, recursion
     // depth) follow `state` first; the mirror sliders edit state.mirror.
@@ -63,6 +65,7 @@ public:
 private:
     void follow(const window::ViewerState& state);
     bool row_widget(const Option& option, const PanelView& view);
+    bool scene_file();
     void numbers(const PanelView& view) const;
     void geometry(const window::LiveNumbers& numbers) const;
 
@@ -70,6 +73,7 @@ private:
     PanelCommandLine accepted_; // the last command line the window took
     Settings current_;
     std::optional<std::string> error_;
+    std::array<char, 1024> scene_field_{}; // the scene file's text field
     bool followed_ = false;
 };
 

@@ -151,6 +151,41 @@ void apply_panel_settings(const Settings& settings, WindowSession& s, window::Vi
     s.effects = setup_effects(s.scene, unplaced, reporter);
 }
 
+// Another scene file, opened as at start-up: load_scene() (the --scene
+// and --camera of the settings), setup_effects() (the mirror placed) and a
+// renderer uploading it. Nothing of the session changes here: on any
+// error the old scene stays on screen and the message goes to the panel.
+struct OpenedScene {
+    LoadedScene loaded;
+    EffectSetup effects;
+    render::Renderer renderer;
+};
+
+std::variant<OpenedScene, std::string> open_scene(const WindowSession& s, const Settings& settings,
+                                                  const Reporter& reporter) {
+    auto loaded = load_scene(settings);
+    if (auto* failure = std::get_if<Failure>(&loaded)) {
+        return failure->message;
+    }
+    LoadedScene& scene = std::get<LoadedScene>(loaded);
+    EffectSetup effects = setup_effects(scene.scene, settings, reporter);
+    auto renderer = render::Renderer::create(*s.context, *s.fn, scene.scene);
+    if (!renderer) {
+        return renderer.error();
+    }
+    return OpenedScene{std::move(scene), std::move(effects), std::move(*renderer)};
+}
+
+// The opened scene replaces the session's: the old renderer (the old
+// scene's buffers, textures and programs) is destroyed first.
+void take_scene(WindowSession& s, OpenedScene opened) {
+    s.renderer.reset();
+    s.renderer.emplace(std::move(opened.renderer));
+    s.scene = std::move(opened.loaded.scene);
+    s.camera_index = opened.loaded.camera_index;
+    s.effects = std::move(opened.effects);
+}
+
 // The key help (and why an effect was not drawn): frame.text as an ImGui
 // window, "keys\taction" lines as a table, beside the panel when it is shown.
 void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
@@ -212,15 +247,25 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
     }
     WindowSession& s = *std::get<std::unique_ptr<WindowSession>>(opened);
     const Reporter reporter{note, note};
-    const std::vector<int> attachments = window::mirror_attachments(s.scene);
-    window::OrbitProjection projection = window::orbit_projection(s.scene, s.camera_index);
-    std::vector<std::string> camera_names; // --camera in the panel: a name, else the index
-    for (std::size_t i = 0; i < s.scene.cameras.size(); ++i) {
-        const std::string& name = s.scene.cameras[i].name;
-        camera_names.push_back(name.empty() ? std::to_string(i) : name);
-    }
-    const window::ControlScene control_scene = window::control_scene(s.scene);
+    // What is derived from the scene: at start-up and for each scene file the panel loads.
+    std::vector<int> attachments;           // what moves with the mirror
+    window::OrbitProjection projection;     // the orbit camera's
+    std::vector<std::string> camera_names;  // --camera in the panel: a name, else the index
+    window::ControlScene control_scene;
     window::Controls controls(control_scene);
+    const auto derive_from_scene = [&] {
+        attachments = window::mirror_attachments(s.scene);
+        projection = window::orbit_projection(s.scene, s.camera_index);
+        camera_names.clear();
+        for (std::size_t i = 0; i < s.scene.cameras.size(); ++i) {
+            const std::string& name = s.scene.cameras[i].name;
+            camera_names.push_back(name.empty() ? std::to_string(i) : name);
+        }
+        control_scene = window::control_scene(s.scene);
+        controls = window::Controls(control_scene);
+    };
+    derive_from_scene();
+    std::optional<OpenedScene> opened_scene; // another --scene the panel asked for, loaded by its check
     window::ViewerState state = initial_state(request);
     Settings settings = request; // what the panel last applied
     WindowPanel panel(args, request);
@@ -355,6 +400,13 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                     if (auto samples = gl::choose_samples(*s.fn, next.msaa_samples); !samples) {
                         return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
                     }
+                    if (next.scene_path != settings.scene_path) {
+                        auto opened = open_scene(s, next, reporter);
+                        if (auto* error = std::get_if<std::string>(&opened)) {
+                            return *error;
+                        }
+                        opened_scene.emplace(std::move(std::get<OpenedScene>(opened)));
+                    }
                     return std::nullopt;
                 };
                 PanelOutcome outcome = panel.draw(state, view);
@@ -362,6 +414,16 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                                           frame->effect == render::Effect::Curved;
                 if (numbers.mirror_rect && mirror_shown && !frame->stereo) {
                     outline(*numbers.mirror_rect, size.height_px);
+                }
+                if (outcome.settings && opened_scene) {
+                    // The new scene: its camera framed anew, the mirror and the facing mirrors where it puts them.
+                    take_scene(s, std::move(*opened_scene));
+                    opened_scene.reset();
+                    derive_from_scene();
+                    state.orbit.reset();
+                    state.mirror = {};
+                    applied_pose = {};
+                    state.link_moves = window::ViewerState{}.link_moves;
                 }
                 if (outcome.settings) {
                     if (outcome.settings->camera != settings.camera) {

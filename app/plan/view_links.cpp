@@ -4,6 +4,7 @@
 
 #include <frustum/lens.hpp>
 #include <frustum/portal.hpp>
+#include <frustum/queries.hpp>
 
 #include <algorithm>
 #include <string>
@@ -14,10 +15,16 @@ namespace {
 constexpr float kMinDepthPerNear = 2.0f; // the anchor lies at least twice the near distance away
 constexpr float kFrameMargin = 0.06f;    // a portal entry's frame: this times its smaller half size wider on each side
 constexpr float kFrameDepth = 0.25f;     // and this times that margin behind the entry
+// The facing links' corridor along f: from this times d to that times d, or
+// to this fraction of the far distance when that is nearer.
+constexpr float kCorridorBegin = 0.2f;
+constexpr float kCorridorEnd = 6.0f;
+constexpr float kCorridorFarFactor = 0.95f;
 
 // E, f, R, U, the anchor A and the frame's half sizes there (view_links.hpp).
 struct Anchor {
     glm::vec3 eye, forward, right, up, point;
+    glm::vec3 view_forward, view_up; // f itself and R x f: the view's own frame (up tilted with the camera's pitch)
     float depth_m, half_width_m, half_height_m;
 };
 
@@ -29,18 +36,18 @@ frustum::Result<Anchor> anchor_of(const frustum::MatrixPair<float>& camera, cons
     }
     Anchor a;
     a.eye = near->eye;
-    a.forward = glm::normalize(glm::cross(near->y_axis, near->x_axis));
-    const float near_m = glm::dot(near->center - near->eye, a.forward);
-    const glm::vec3 horizontal = glm::cross(a.forward, glm::vec3(0.0f, 1.0f, 0.0f));
+    a.view_forward = glm::normalize(glm::cross(near->y_axis, near->x_axis));
+    const float near_m = glm::dot(near->center - near->eye, a.view_forward);
+    const glm::vec3 horizontal = glm::cross(a.view_forward, glm::vec3(0.0f, 1.0f, 0.0f));
     const bool level = glm::length(horizontal) > 1e-3f;
     a.right = level ? glm::normalize(horizontal) : glm::normalize(near->x_axis);
     a.up = level ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::normalize(near->y_axis);
     // Keep the frames orthonormal: forward along the horizontal plane for the quads.
     a.forward = glm::cross(a.up, a.right);
+    a.view_up = glm::cross(a.right, a.view_forward);
     const glm::vec3 center = 0.5f * (bounds.min + bounds.max);
-    a.depth_m = std::max(glm::dot(center - a.eye, glm::normalize(glm::cross(near->y_axis, near->x_axis))),
-                         kMinDepthPerNear * near_m);
-    a.point = a.eye + a.depth_m * glm::normalize(glm::cross(near->y_axis, near->x_axis));
+    a.depth_m = std::max(glm::dot(center - a.eye, a.view_forward), kMinDepthPerNear * near_m);
+    a.point = a.eye + a.depth_m * a.view_forward;
     a.half_width_m = near->half_width_m * a.depth_m / near_m;
     a.half_height_m = near->half_height_m * a.depth_m / near_m;
     return a;
@@ -116,13 +123,22 @@ frustum::Result<std::vector<ViewLink>> place_facing_links(const frustum::MatrixP
     }
     const float reach_m = 0.45f * a->half_width_m;
     // From depth 0.2 d to 6 d along f: a corridor long enough for rays to
-    // bounce about six times within the frame's horizontal field.
-    const glm::vec3 middle = a->eye + 3.1f * a->depth_m * glm::normalize(a->point - a->eye);
+    // bounce about six times within the frame's horizontal field; it ends
+    // 5% short of a nearer far plane (each reflection keeps the depths
+    // along f, so every view of the corridor keeps some of it in view).
+    const auto far_m = frustum::far_distance(camera);
+    const float begin_m = kCorridorBegin * a->depth_m;
+    const float longest_m = kCorridorEnd * a->depth_m;
+    const float end_m = std::max(far_m ? std::min(longest_m, kCorridorFarFactor * *far_m) : longest_m, 2.0f * begin_m);
+    // The quads lie along f and R x f, not along the horizontal: seen from
+    // a camera looking down on the model they cover the view's sides as
+    // from a level one (their planes stay vertical: normals +-R).
+    const glm::vec3 middle = a->eye + 0.5f * (begin_m + end_m) * a->view_forward;
     // Left faces +R (x = f), right faces -R (x = -f).
-    const auto left = frame(middle - reach_m * a->right, a->forward, a->up);
-    const auto right = frame(middle + reach_m * a->right, -a->forward, a->up);
+    const auto left = frame(middle - reach_m * a->right, a->view_forward, a->view_up);
+    const auto right = frame(middle + reach_m * a->right, -a->view_forward, a->view_up);
     ViewLink l, r;
-    l.half_width_m = r.half_width_m = 2.9f * a->depth_m;
+    l.half_width_m = r.half_width_m = 0.5f * (end_m - begin_m);
     l.half_height_m = r.half_height_m = 0.6f * a->half_height_m;
     if (set == LinkSet::Portals) {
         r.kind = ViewLink::Kind::Portal;

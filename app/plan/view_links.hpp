@@ -63,7 +63,9 @@ frustum::Result<std::vector<ViewLink>> place_portal_pair(const frustum::MatrixPa
 
 // The recursion effect's links: two mirrors 0.45 s_x either side of the
 // view axis facing each other (+R and -R), from depth 0.2 d to 6 d along the
-// axis and 0.6 s_y half high; or for
+// axis (to 95% of the far distance when that is nearer) and 0.6 s_y half
+// high, their quads along f and R x f (so they frame a view that looks down
+// as they frame a level one); or for
 // LinkSet::Portals one portal with its entry the right one and its exit the
 // left one (looking into the entry, one comes out of the exit towards the
 // entry again).

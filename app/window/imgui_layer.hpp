@@ -33,6 +33,9 @@ public:
     // window (or a drag started there). A second press or release of a
     // button within one frame waits for the next frame, so a quick click
     // (press and release in one poll) still reaches ImGui as a click.
+    // While an ImGui text field is edited, the keys and typed characters
+    // are its own (Backspace, Enter, Left, Right, Home, Esc; each down for
+    // one frame) and none passes.
     // `shown`: false = ImGui sees nothing and every event passes.
     std::vector<gl::InputEvent> feed(std::vector<gl::InputEvent> events, bool shown);
 
@@ -49,6 +52,7 @@ private:
     ImGuiContext* context_;
     ImGuiPainter painter_;
     std::vector<gl::InputEvent> waiting_; // mouse events for the next frames
+    std::vector<gl::InputEvent> keys_waiting_; // a text field's keys for the next frames
     int width_px_ = 0, height_px_ = 0;
 };
 

@@ -12,39 +12,10 @@
 set -euo pipefail
 demo=$1
 out=$2
-"$demo" window --size 480x360 --panel &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
-# After each click the pointer leaves the panel (no tooltip over the view),
-# then the window is read until two reads 0.3 s apart agree (nothing moves
-# in the window once the click is drawn: the live numbers, which change every
-# frame, lie below the 360 px window; a loaded machine only takes longer).
-settle() {
-  xdotool mousemove --window "$wid" 470 350
-  local last="" now
-  for _ in $(seq 40); do
-    sleep 0.3
-    now=$(xwd -id "$wid" -silent | md5sum)
-    if [ "$now" = "$last" ]; then return 0; fi
-    last=$now
-  done
-  echo "panel_clicks.sh: the window did not settle" >&2
-  return 1
-}
-shot() { import -window "$wid" "$out/$1"; }
-# A click as three steps with time between them, so that press and release
-# land in different frames even on a loaded machine (ImGui 1.86 keeps only
-# the button's state per frame: a press and release within one frame are
-# lost, and a release it misses lets the slider follow the pointer away).
-click() {
-  xdotool mousemove --window "$wid" "$1" "$2"
-  sleep 0.4
-  xdotool mousedown 1
-  sleep 0.4
-  xdotool mouseup 1
-  sleep 0.4
-}
+script=panel_clicks.sh
+# shellcheck source=panel_steps.sh
+source "$(dirname "$0")/panel_steps.sh"
+open_window --size 480x360 --panel
 settle
 shot a.png
 click 100 76 # the --effect list (below --camera)
@@ -57,6 +28,4 @@ shot c.png
 click 36 351 # its left end: 0
 settle
 shot d.png
-xdotool key --window "$wid" Escape
-wait $pid
-trap - EXIT
+finish

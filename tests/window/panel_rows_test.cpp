@@ -5,16 +5,20 @@
 // command line's own messages, and the live numbers come from the frame's
 // pairs.
 #include "../plan/showcase.hpp"
+#include "../sample_files.hpp"
 
 #include <doctest/doctest.h>
 
 #include <demo/options.hpp>
 #include <demo/panel_command_line.hpp>
+#include <demo/scene_files.hpp>
 #include <plan/number_text.hpp>
 #include <window/frame.hpp>
 #include <window/live_numbers.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iterator>
 #include <string>
 #include <variant>
@@ -124,6 +128,27 @@ TEST_CASE("the panel's command line: set replaces, remove drops, and a refused v
     REQUIRE(std::holds_alternative<demo::Failure>(command_line));
     CHECK(std::get<demo::Failure>(refused).message == std::get<demo::Failure>(command_line).message);
     CHECK(std::get<demo::Failure>(refused).message == "--lens-power must be a number in (0, 2], got '0'");
+}
+
+TEST_CASE("the scene files beside one: its folder's and the folders' next to it, sorted") {
+    // A sample: every vendored sample (one per folder) and nothing else.
+    const std::vector<std::filesystem::path> all = test_samples::scene_files();
+    std::vector<std::string> samples;
+    for (auto it = all.begin() + 1; it != all.end(); ++it) { // [0] is the showcase
+        samples.push_back(it->string());
+    }
+    const std::string box = std::string(FRUSTUM_SAMPLES_DIR) + "/Box/Box.gltf";
+    CHECK(demo::scene_files_beside(box) == samples);
+    // The showcase: itself among them (its folder's only scene file).
+    const std::string showcase = std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf";
+    const std::vector<std::string> near_showcase = demo::scene_files_beside(showcase);
+    CHECK(std::find(near_showcase.begin(), near_showcase.end(), showcase) != near_showcase.end());
+    for (const std::string& file : near_showcase) {
+        const std::string extension = std::filesystem::path(file).extension().string();
+        CHECK((extension == ".gltf" || extension == ".glb"));
+    }
+    // A folder that does not exist: nothing, no error.
+    CHECK(demo::scene_files_beside("/nonexistent/folder/x.gltf").empty());
 }
 
 TEST_CASE("live numbers: the camera pair's residual, the mirror's rectangle, a timed pass per planned pair") {

@@ -2,14 +2,20 @@
 // only its own region (the left demo::kPanelWidthPx screen units), hiding
 // it again gives `frustum-demo render`'s image, and clicks on it (xdotool,
 // panel_clicks.sh) change the effect and an option while a refused value
-// shows its error in the panel and leaves the view alone. Tolerances:
+// shows its error in the panel and leaves the view alone; the scene file
+// control (scene_clicks.sh) loads another sample, as `render` draws it, and
+// a missing file leaves it on screen with the error in the panel. Tolerances:
 // shots.hpp; "differs" means more than 200 pixels differ by more than it.
 #include "process.hpp"
 #include "shots.hpp"
 
 #include <doctest/doctest.h>
 
+#include <demo/scene_files.hpp>
 #include <demo/window_panel.hpp>
+
+#include <algorithm>
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -29,6 +35,37 @@ constexpr int kDiffers = 200;
 // The part of a screenshot right of the panel.
 image::Image beside_panel(const image::Image& shot) { return crop(shot, kPanelPx, 0, shot.width, shot.height); }
 image::Image panel_part(const image::Image& shot) { return crop(shot, 0, 0, kPanelPx, shot.height); }
+
+struct ScriptShots {
+    window_test::Child child;
+    image::Image a, b, c, d; // the script's a.png .. d.png
+};
+
+// tests/window/<script> FRUSTUM_DEMO OUT_DIR args... under xvfb-run, which
+// must end with 0, and its four screenshots; empty (with a message) when
+// xvfb-run, xdotool or ImageMagick's import is missing.
+std::optional<ScriptShots> run_panel_script(const std::string& script, const TempDir& dir,
+                                            const std::vector<std::string>& args = {}) {
+    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
+    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
+        window_test::find_on_path("import").empty()) {
+        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+        return std::nullopt;
+    }
+    std::vector<std::string> all{"-a", "-s", "-screen 0 1024x768x24", "bash",
+                                 std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/" + script, window_test::kDemo,
+                                 (dir / "").string()};
+    all.insert(all.end(), args.begin(), args.end());
+    ScriptShots shots;
+    shots.child = window_test::run(xvfb_run, all);
+    REQUIRE_MESSAGE(shots.child.exit_status == 0, shots.child.err);
+    shots.a = read(dir / "a.png");
+    shots.b = read(dir / "b.png");
+    shots.c = read(dir / "c.png");
+    shots.d = read(dir / "d.png");
+    REQUIRE(shots.a.width == 480);
+    return shots;
+}
 
 } // namespace
 
@@ -57,20 +94,12 @@ TEST_CASE("the panel covers only its region; hidden again the window equals rend
 }
 
 TEST_CASE("clicks on the panel change the effect and the lens power; a refused value changes nothing") {
-    const std::string xvfb_run = window_test::find_on_path("xvfb-run");
-    if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
-        window_test::find_on_path("import").empty()) {
-        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+    TempDir dir;
+    const auto child = run_panel_script("panel_clicks.sh", dir);
+    if (!child) {
         return;
     }
-    TempDir dir;
-    const std::string script = std::string(FRUSTUM_SOURCE_DIR) + "/tests/window/panel_clicks.sh";
-    const window_test::Child child = window_test::run(
-        xvfb_run, {"-a", "-s", "-screen 0 1024x768x24", "bash", script, window_test::kDemo, (dir / "").string()});
-    REQUIRE_MESSAGE(child.exit_status == 0, child.err);
-    const image::Image a = read(dir / "a.png"), b = read(dir / "b.png"), c = read(dir / "c.png"),
-                       d = read(dir / "d.png");
-    REQUIRE(a.width == 480);
+    const image::Image &a = child->a, &b = child->b, &c = child->c, &d = child->d;
     // The effect list's "lens": the view is render's lens effect.
     check_similar(beside_panel(b), beside_panel(render_offscreen(dir, "lens", "480x360")), "lens chosen");
     CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
@@ -80,6 +109,32 @@ TEST_CASE("clicks on the panel change the effect and the lens power; a refused v
     // in (0, 2]"): the panel shows the message, the view stays.
     check_similar(beside_panel(d), beside_panel(c), "refused value");
     CHECK(pixels_differing(crop(c, 0, 20, kPanelPx, 45), crop(d, 0, 20, kPanelPx, 45)) > kDiffers); // the message on top
+}
+
+TEST_CASE("the scene file control loads another sample, and a missing file leaves the old one on screen") {
+    TempDir dir;
+    const std::string box = std::string(FRUSTUM_SAMPLES_DIR) + "/Box/Box.gltf";
+    const std::string duck = std::string(FRUSTUM_SAMPLES_DIR) + "/Duck/Duck.gltf";
+    // Duck's place in the "beside it" list, as the panel derives it (the script clicks rows 0..7).
+    const std::vector<std::string> beside = demo::scene_files_beside(box);
+    const auto at = std::find(beside.begin(), beside.end(), duck);
+    REQUIRE(at != beside.end());
+    const long index = at - beside.begin();
+    REQUIRE(index < 8);
+    const auto child = run_panel_script("scene_clicks.sh", dir, {box, std::to_string(index), "/nonexistent/missing.gltf"});
+    if (!child) {
+        return;
+    }
+    const image::Image &a = child->a, &b = child->b, &c = child->c, &d = child->d;
+    // Duck chosen: the view changes, and with the panel hidden it is render's Duck.
+    CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
+    const image::Image rendered = render_offscreen(dir, "plain", "480x480", {"--scene", duck});
+    check_similar(beside_panel(b), beside_panel(rendered), "Duck loaded");
+    check_similar(d, rendered, "Duck loaded, panel hidden");
+    // The missing file: its error on top of the panel, the Duck still on screen.
+    check_similar(beside_panel(c), beside_panel(b), "missing file");
+    CHECK(pixels_differing(crop(b, 0, 20, kPanelPx, 45), crop(c, 0, 20, kPanelPx, 45)) > kDiffers);
+    CHECK(child->child.err.find("does not exist") == std::string::npos); // shown in the panel, not printed
 }
 
 } // TEST_SUITE
