@@ -54,46 +54,43 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
 
 } // namespace
 
-// The fast form: the reference form's arithmetic in one inlined pass. The
-// reflected columns go straight to the clip step, with c' = -(M^-T c), Q and
-// m3 . Q from the unreflected pair (oblique_clip_core.hpp). (Reflecting with
-// 2 / |n|^2 instead of normalizing twice was measured: a few % higher mean
-// and p99.9 error in some depth ranges, so the reference's bits are kept.)
+// The fast form: the reference form's arithmetic in one inlined pass, the
+// reflected columns straight into the clip step, with c' = -(M^-T c), Q and
+// m3 . Q from the unreflected pair (oblique_clip_core.hpp). The plane is not
+// normalized (the clip is scale-invariant) and reflect() uses
+// R = I - (2 / |n|^2) n c^T. Every refusal goes through the reference form:
+// its tests (the plane's, the eye in front of the mirror) are implied by
+// the clip step's (the eye test with p . p >= |n|^2).
 template <class T>
 Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     using detail::V4;
-    const T length_squared = detail::normal_length_squared(plane.abcd);
-    if (!detail::plane_usable(plane.abcd, length_squared)) {
-        return detail::plane_error(plane.abcd, "mirror");
-    }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    const V4<T> p = detail::load(plane.abcd); // not normalized: the clip is scale-invariant
+    const V4<T> p = detail::load(plane.abcd);
     const V4<T> m_row3 = detail::transpose(m).c[3];
-    const detail::ClipPlane<T> clip_plane = detail::clip_plane(inv, m_row3, p, T(-1));
-    const V4<T>& c_clip = clip_plane.c_clip; // -(M^-T p)
-    // The real eye in front of the mirror: eye_side > 64 eps |inv_2| |n|,
-    // squared (no square roots).
-    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip[2];
-    const T floor = T(64) * std::numeric_limits<T>::epsilon();
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * (detail::dot<T>(inv.c[2], inv.c[2]) * length_squared))) {
+    const detail::ClipDepth<T> depth = detail::clip_depth<T>(pair.depth());
+    const detail::ClipPlane<T> clip_plane = detail::clip_plane<true>(inv, m_row3, p);
+    const detail::ClipScalars<T> k = detail::clip_scalars<true>(inv, p, clip_plane, depth);
+    if (!k.ok) {
         return mirror_reference(pair, plane);
     }
     // reflect() (eq. 16) with R = I - (2 / |n|^2) n c^T: M R has columns
-    // M_j - (2 p_j / |n|^2) M n, R M^-1 columns M^-1_j - (2 (p . M^-1_j) / |n|^2) n,
-    // and p . M^-1_j = -c'_j.
+    // M_j - (2 p_j / |n|^2) M n (their lane 2 is replaced by the clip),
+    // R M^-1 columns M^-1_j - (2 (p . M^-1_j) / |n|^2) n, and p . M^-1_j = -c'_j.
     const V4<T> n{p[0], p[1], p[2], T(0)};
     const V4<T> m_n = detail::mat_vec(m, n);
-    const T two_over_length_squared = T(2) / length_squared;
-    const V4<T> two_c = two_over_length_squared * p, two_c_inv = two_over_length_squared * c_clip;
-    detail::Cols<T> reflected, reflected_inv;
+    const T two_over_length_squared = T(2) / detail::normal_length_squared(plane.abcd);
+    const V4<T> two_c = two_over_length_squared * p, two_c_inv = two_over_length_squared * clip_plane.c_clip;
+    const V4<T> m_n_xy = detail::xy_pairs(m_n, m_n);
+    const V4<T> xy01 = detail::xy_pairs(m.c[0], m.c[1]) - detail::lane_pairs<0, 1>(two_c) * m_n_xy;
+    const V4<T> xy23 = detail::xy_pairs(m.c[2], m.c[3]) - detail::lane_pairs<2, 3>(two_c) * m_n_xy;
+    const V4<T> row3 = m_row3 - two_c * detail::lane<3>(m_n);
+    detail::Cols<T> reflected_inv;
     for (int j = 0; j < 4; ++j) {
-        reflected.c[j] = m.c[j] - two_c[j] * m_n;
         reflected_inv.c[j] = inv.c[j] + two_c_inv[j] * n;
     }
-    return detail::clip_columns(reflected, reflected_inv, p, clip_plane, T(-1), pair.depth(),
-                                detail::PairFactory::flipped_traits(pair),
-                                [&] { return mirror_reference(pair, plane); });
+    return detail::clip_result(xy01, xy23, row3, reflected_inv, p, clip_plane.c_clip, depth, k,
+                               detail::PairFactory::flipped_traits(pair));
 }
 
 namespace {

@@ -103,22 +103,25 @@ FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& p
 
 } // namespace
 
-// The fast form: the unit plane p, c' = M^-T p, then detail::clip_columns.
+// The fast form: c' = M^-T p for the plane as given (every output of the
+// clip is invariant under the plane's scale, k c and X are: no
+// normalization), then detail::clip_scalars and clip_result. Every refusal,
+// the plane's own included, goes through the reference form above.
 template <class T>
 Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& plane) {
-    const T length_squared = detail::normal_length_squared(plane.abcd);
-    if (!detail::plane_usable(plane.abcd, length_squared)) {
-        return detail::plane_error(plane.abcd, "clip_oblique");
-    }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
-    // Not normalized: every output of the clip is invariant under the
-    // plane's scale (k c and X are).
     const detail::V4<T> p = detail::load(plane.abcd);
     const detail::V4<T> m_row3 = detail::transpose(m).c[3];
-    return detail::clip_columns(m, inv, p, detail::clip_plane(inv, m_row3, p, T(1)), T(1), pair.depth(),
-                                detail::PairFactory::traits(pair),
-                                [&] { return clip_oblique_reference(pair, plane); });
+    const detail::ClipDepth<T> depth = detail::clip_depth<T>(pair.depth());
+    const detail::ClipPlane<T> clip_plane = detail::clip_plane<false>(inv, m_row3, p);
+    const detail::ClipScalars<T> k = detail::clip_scalars<false>(inv, p, clip_plane, depth);
+    if (!k.ok) {
+        return clip_oblique_reference(pair, plane);
+    }
+    return detail::clip_result(detail::xy_pairs(m.c[0], m.c[1]), detail::xy_pairs(m.c[2], m.c[3]), m_row3,
+                                      inv, p, clip_plane.c_clip, depth, k,
+                                      detail::PairFactory::traits(pair));
 }
 
 template Result<MatrixPair<float>> clip_oblique(const MatrixPair<float>&, const Plane<float>&);

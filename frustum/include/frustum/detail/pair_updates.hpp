@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #if defined(__GNUC__)
 #define FRUSTUM_HOT_INLINE inline __attribute__((always_inline))
@@ -143,91 +144,130 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 
 // ---- oblique clip (eq. 20-27, column form; oblique_clip.hpp) ----
 
+// z_near, z_far and z_far - z_near of a depth range, by table (no branch).
+template <class T>
+struct ClipDepth {
+    T z_near, z_far, span;
+};
+template <class T>
+FRUSTUM_HOT_INLINE ClipDepth<T> clip_depth(DepthRange depth) {
+    static constexpr ClipDepth<T> table[] = {
+        {clip_z_near<T>(DepthRange::ZeroToOne), clip_z_far<T>(DepthRange::ZeroToOne),
+         clip_z_span<T>(DepthRange::ZeroToOne)},
+        {clip_z_near<T>(DepthRange::MinusOneToOne), clip_z_far<T>(DepthRange::MinusOneToOne),
+         clip_z_span<T>(DepthRange::MinusOneToOne)},
+        {clip_z_near<T>(DepthRange::ReversedZeroToOne), clip_z_far<T>(DepthRange::ReversedZeroToOne),
+         clip_z_span<T>(DepthRange::ReversedZeroToOne)}};
+    return table[static_cast<int>(depth)];
+}
+
 // The clip plane in clip space and what k needs, formed in the wider type
 // (double for float pairs: every product of two floats is exact there, so
 // these dot products lose almost nothing to rounding, and k is rounded to
-// float once). With k_inverse = M^-1 of the pair k is taken from (the pair
+// float once). With M^-1 and row 3 m3 of the pair k is taken from (the pair
 // itself for a plain clip, the unreflected pair for a mirror, see
-// oblique_clip_core.hpp) and its row 3 m3:
-//   d_j = p . M^-1_j,   e_j = m3 . M^-1_j,   c' = k_sign d (rounded to T).
-// Then for Q = M^-1 q: c . Q = d . q and m3 . Q = e . q.
+// oblique_clip_core.hpp):
+//   d_j = p . M^-1_j,   e_j = m3 . M^-1_j,   c' = k_sign d (rounded to T),
+// k_sign = -1 for a mirror (c' = -(M^-T c) there). For Q = M^-1 q:
+// c . Q = d . q and m3 . Q = e . q.
 template <class T>
 struct ClipPlane {
     V4<typename Wider<T>::type> d, e;
     V4<T> c_clip;
 };
-template <class T>
-FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>& k_row3, const V4<T>& p, T k_sign) {
+template <bool Mirror, class T>
+FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>& k_row3, const V4<T>& p) {
     using W = typename Wider<T>::type;
-    const Cols<T> rows = transpose(k_inverse);
-    const V4<W> p_w = convert<W, T>(p), m3_w = convert<W, T>(k_row3);
-    const Cols<W> rows_w{{convert<W, T>(rows.c[0]), convert<W, T>(rows.c[1]), convert<W, T>(rows.c[2]),
-                          convert<W, T>(rows.c[3])}};
-    const V4<W> d = dots(rows_w, p_w);
-    const V4<W> e = dots(rows_w, m3_w);
-    return {d, e, convert<T, W>(W(k_sign) * d)};
+    ClipPlane<T> out;
+    if constexpr (std::is_same_v<W, double>) {
+        column_dots_double(k_inverse, p, k_row3, out.d, out.e);
+    } else {
+        const Cols<T> rows = transpose(k_inverse);
+        out.d = dots(rows, p);
+        out.e = dots(rows, k_row3);
+    }
+    out.c_clip = convert<T, W>(Mirror ? -out.d : out.d);
+    return out;
 }
 
-// The oblique clip of the pair (m, inv) by the plane p, which need not be
-// unit: every output is invariant under p's scale (k c and X are). plane
-// comes from clip_plane() with k_sign (-1 for a mirror: c' = -(M^-T c)
-// there, and k = -(m3 . Q) / (c . Q) on the unreflected pair). When a check
-// fails or the numbers leave the safe range it returns slow(): the caller's
+// k (as (z_f - z_n) k) and 1 / X_2 of the clip, or ok = false when a check
+// fails or the numbers leave the safe range: the caller then returns its
 // normalized reference form (cold, in src/oblique_clip.cpp and mirror.cpp),
 // which refuses with the error text or, at a rounding boundary of a check,
-// gives the result.
-template <class T, class Slow>
-FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_columns(const Cols<T>& m, const Cols<T>& inv, const V4<T>& p,
-                                                      const ClipPlane<T>& plane, T k_sign, DepthRange depth,
-                                                      unsigned traits, Slow&& slow) {
+// gives the result. Every quantity is invariant under p's scale, so p need
+// not be unit.
+template <class T>
+struct ClipScalars {
+    T span_k, inv_x2;
+    bool ok;
+};
+template <bool Mirror, class T>
+FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& p, const ClipPlane<T>& plane,
+                                               const ClipDepth<T>& depth) {
     using W = typename Wider<T>::type;
-    const V4<T>& c_clip = plane.c_clip;
-    const T z_near = clip_z_near<T>(depth);
-    const T z_far = clip_z_far<T>(depth);
-    const T span = z_far - z_near;
+    constexpr T k_sign = Mirror ? T(-1) : T(1);
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor = T(64) * eps;
 
+    // The plane's normal non-zero. (A NaN or infinite coefficient, or an
+    // overflowing |p|^2, fails the eye test below: p . p is then not finite.)
+    const V4<T> p_squared = p * p;
+    const T normal_squared = (p_squared[0] + p_squared[1]) + p_squared[2];
     // Eye strictly on the negative side, relative to the eye column's size.
-    const T eye_side = span * c_clip[2];
+    const T eye_side = depth.span * plane.c_clip[2];
     const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
-    // Far corner on the plane's positive side (erratum 2), not a sliver.
-    const T c_dot_q = dot<T>(c_clip, signs_xy_with(c_clip, z_far));
-    const T scale = std::abs(c_clip[0]) + std::abs(c_clip[1]) + std::abs(c_clip[2]) + std::abs(c_clip[3]);
 
-    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (analytic-inverse-accuracy.md),
-    // q = (sign c'_x, sign c'_y, z_f, 1): both dot products from d and e.
-    // k and 1 / X_2 side by side: two independent divisions, not three in
-    // series (X_2 = (z_f - z_n) k c'_z, so 1 / X_2 = b / (a c'_z)).
-    const V4<W> q = signs_xy_with(W(k_sign) * plane.d, W(z_far));
-    const W a = W(span) * (W(k_sign) * dot<W>(plane.e, q));
+    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (eq. 20-21,
+    // analytic-inverse-accuracy.md), q = (sign c'_x, sign c'_y, z_f, 1)
+    // (erratum 2): both dot products from d and e.
+    const V4<W> q = signs_xy_with(W(k_sign) * plane.d, W(depth.z_far));
     const W b = dot<W>(plane.d, q);
+    const W a = W(depth.span * k_sign) * dot<W>(plane.e, q);
+    // Far corner on the plane's positive side, not a sliver: c' . q = k_sign b
+    // above 64 eps sum |c'_i|. Formed in W; when W is wider than T the float
+    // form of the test may differ by a few eps sum |c'_i|, so the fast form
+    // asks for 72 (between 64 and 72 the reference form decides).
+    const W scale = ((std::abs(plane.d[0]) + std::abs(plane.d[1])) + std::abs(plane.d[2])) + std::abs(plane.d[3]);
+    const W corner_floor = (std::is_same_v<W, T> ? W(64) : W(72)) * W(eps);
+    // All tests formed before one branch (& rather than &&: the compiler
+    // would otherwise sink e and the scale past early exits, and spill).
     // The divisions only once their divisors are known non-zero (a plane
     // through the eye has c'_z = 0): no division by zero, also under
-    // -fsanitize=float-divide-by-zero; the checks do not wait for them.
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared && c_dot_q > floor * scale &&
-          a != W(0) && b != W(0))) {
-        return slow();
+    // -fsanitize=float-divide-by-zero.
+    const bool usable = (normal_squared > T(0)) & (eye_side > T(0)) &
+                        (eye_side * eye_side > floor * floor * eye_scale_squared) &
+                        (W(k_sign) * b > corner_floor * scale) & (std::abs(a) > W(0));
+    if (!usable) {
+        return {T(0), T(0), false};
     }
+    // k and 1 / X_2 side by side: two independent divisions, not three in
+    // series (X_2 = (z_f - z_n) k c'_z, so 1 / X_2 = b / (a c'_z)).
     const T span_k = T(a / b);
-    const T inv_x2 = T(b / (a * W(c_clip[2])));
-    if (!(std::isnormal(span_k) && std::isnormal(inv_x2))) {
-        return slow();
-    }
-    // New row 2 (eq. 22 generalized): (z_f - z_n) k c + z_n m3, entry j in
-    // column j.
-    const V4<T> m_w = transpose(m).c[3];
-    const V4<T> row2 = span_k * p + z_near * m_w;
-    const auto column = [&](int j) { return store<T>(with_lane<2>(m.c[j], row2[j])); };
-    // T^-1 (eq. 26-27), X = (z_f - z_n) k c' + z_n e3: column 2 / X_2,
-    // column j - (X_j / X_2) column 2, with X_j / X_2 = c'_j / c'_z for
-    // j = 0, 1 and c'_w / c'_z + z_n / X_2 for j = 3 (c' / c'_z does not
-    // wait for k, and has fewer roundings).
+    const T inv_x2 = T(b / (a * W(plane.c_clip[2])));
+    return {span_k, inv_x2, bool(std::isnormal(span_k) & std::isnormal(inv_x2))};
+}
+
+// The clipped pair. The new matrix: lanes 0, 1 and 3 of its columns are
+// those of the matrix being clipped (xy01 = xy_pairs(column 0, column 1),
+// xy23, and its row 3), row 2 is eq. 22 generalized: (z_f - z_n) k c + z_n m3.
+// The new inverse from inv, the inverse being clipped, by T^-1 (eq. 26-27),
+// X = (z_f - z_n) k c' + z_n e3: column 2 / X_2, column j - (X_j / X_2)
+// column 2, with X_j / X_2 = c'_j / c'_z for j = 0, 1 and
+// c'_w / c'_z + z_n / X_2 for j = 3 (c' / c'_z does not wait for k, and has
+// fewer roundings).
+template <class T>
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_result(const V4<T>& xy01, const V4<T>& xy23, const V4<T>& row3,
+                                                     const Cols<T>& inv, const V4<T>& p, const V4<T>& c_clip,
+                                                     const ClipDepth<T>& depth, const ClipScalars<T>& k,
+                                                     unsigned traits) {
+    const V4<T> row2 = k.span_k * p + depth.z_near * row3;
+    const Cols<T> m = columns_from_rows23(xy01, xy23, row2, row3);
     const V4<T> c_over_cz = c_clip / splat(c_clip[2]);
     return PairFactory::keep_sign_result<T>(
-        column(0), column(1), column(2), column(3), store<T>(inv.c[0] - c_over_cz[0] * inv.c[2]),
-        store<T>(inv.c[1] - c_over_cz[1] * inv.c[2]), store<T>(inv.c[2] * inv_x2),
-        store<T>(inv.c[3] - (c_over_cz[3] + z_near * inv_x2) * inv.c[2]), traits);
+        store<T>(m.c[0]), store<T>(m.c[1]), store<T>(m.c[2]), store<T>(m.c[3]),
+        store<T>(inv.c[0] - c_over_cz[0] * inv.c[2]), store<T>(inv.c[1] - c_over_cz[1] * inv.c[2]),
+        store<T>(inv.c[2] * k.inv_x2), store<T>(inv.c[3] - (c_over_cz[3] + depth.z_near * k.inv_x2) * inv.c[2]),
+        traits);
 }
 
 } // namespace frustum::detail

@@ -267,4 +267,63 @@ inline V4<T> dots(const Cols<T>& rows, const V4<T>& v) {
     return mat_vec(rows, v);
 }
 
+
+// Lanes 0 and 1 of a and of b: (a_0, a_1, b_0, b_1). The x and y of two
+// columns side by side (the oblique clip rewrites only their lane 2).
+inline V4<float> xy_pairs(const V4<float>& a, const V4<float>& b) {
+    return __builtin_shufflevector(a, b, 0, 1, 4, 5);
+}
+inline Double4 xy_pairs(const Double4& a, const Double4& b) {
+    return {a.lo, b.lo};
+}
+// (v_I, v_I, v_J, v_J): each column's factor beside its xy pair.
+template <int I, int J>
+inline V4<float> lane_pairs(const V4<float>& v) {
+    return __builtin_shufflevector(v, v, I, I, J, J);
+}
+template <int I, int J>
+inline Double4 lane_pairs(const Double4& v) {
+    const Double2 a = I < 2 ? v.lo : v.hi, b = J < 2 ? v.lo : v.hi;
+    return {__builtin_shufflevector(a, a, I % 2, I % 2), __builtin_shufflevector(b, b, J % 2, J % 2)};
+}
+
+// Columns from lanes 0-1 (xy01 = xy_pairs(col 0, col 1), xy23 likewise)
+// and rows 2 and 3: column j = (x_j, y_j, row2_j, row3_j). Six shuffles
+// for four lane inserts (SSE2 has no insertps).
+inline Cols<float> columns_from_rows23(const V4<float>& xy01, const V4<float>& xy23, const V4<float>& row2,
+                                       const V4<float>& row3) {
+    const V4<float> low = __builtin_shufflevector(row2, row3, 0, 4, 1, 5);  // (r2_0, r3_0, r2_1, r3_1)
+    const V4<float> high = __builtin_shufflevector(row2, row3, 2, 6, 3, 7); // (r2_2, r3_2, r2_3, r3_3)
+    return {{__builtin_shufflevector(xy01, low, 0, 1, 4, 5), __builtin_shufflevector(xy01, low, 2, 3, 6, 7),
+             __builtin_shufflevector(xy23, high, 0, 1, 4, 5), __builtin_shufflevector(xy23, high, 2, 3, 6, 7)}};
+}
+inline Cols<double> columns_from_rows23(const Double4& xy01, const Double4& xy23, const Double4& row2,
+                                        const Double4& row3) {
+    return {{Double4(xy01.lo, __builtin_shufflevector(row2.lo, row3.lo, 0, 2)),
+             Double4(xy01.hi, __builtin_shufflevector(row2.lo, row3.lo, 1, 3)),
+             Double4(xy23.lo, __builtin_shufflevector(row2.hi, row3.hi, 0, 2)),
+             Double4(xy23.hi, __builtin_shufflevector(row2.hi, row3.hi, 1, 3))}};
+}
+
+// (a . cols_j)_j and (b . cols_j)_j in double, column by column: the halves
+// (t0 + t2, t1 + t3) in one multiply-add of 2-lane vectors, then the
+// halves' sums of two columns in one addition (no transpose, no splats).
+// For float inputs every product is exact in double.
+template <class T>
+inline void column_dots_double(const Cols<T>& cols, const V4<T>& a, const V4<T>& b, Double4& a_dots,
+                               Double4& b_dots) {
+    const Double4 aw = widen(a), bw = widen(b);
+    Double2 sa[4], sb[4];
+    for (int j = 0; j < 4; ++j) {
+        const Double4 c = widen(cols.c[j]);
+        sa[j] = c.lo * aw.lo + c.hi * aw.hi;
+        sb[j] = c.lo * bw.lo + c.hi * bw.hi;
+    }
+    const auto sums = [](const Double2& x, const Double2& y) {
+        return __builtin_shufflevector(x, y, 0, 2) + __builtin_shufflevector(x, y, 1, 3);
+    };
+    a_dots = {sums(sa[0], sa[1]), sums(sa[2], sa[3])};
+    b_dots = {sums(sb[0], sb[1]), sums(sb[2], sb[3])};
+}
+
 } // namespace frustum::detail
