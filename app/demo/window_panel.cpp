@@ -320,7 +320,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
 // The pair's planes (normalized, inward: a x + b y + c z + d >= 0 inside)
 // and key points (world; "at infinity" gives the direction), §3.
 void WindowPanel::geometry(const window::LiveNumbers& n) const {
-    if (!ImGui::TreeNode("planes and key points (§3)")) {
+    if (!ImGui::TreeNode("planes and key points (paper section 3)")) {
         return;
     }
     const char* plane_names[6] = {"left", "right", "bottom", "top", "near", "far"};
