@@ -11,16 +11,12 @@ FragmentCounter::FragmentCounter(const gl::Context& context, const gl::Functions
 }
 
 void FragmentCounter::start_query(Slot& slot) {
-    if (slot.used == slot.queries.size()) {
-        auto made = gl::Query::create(*fn_);
-        if (!made) {
-            unavailable_ = "n/a: " + made.error();
-            return;
-        }
-        slot.queries.push_back(std::move(*made));
+    auto query = slot.queries.next(*fn_);
+    if (!query) {
+        unavailable_ = "n/a: " + query.error();
+        return;
     }
-    fn_->BeginQuery(GL_SAMPLES_PASSED, slot.queries[slot.used].id());
-    ++slot.used;
+    fn_->BeginQuery(GL_SAMPLES_PASSED, *query);
     slot.counting = true;
 }
 
@@ -34,7 +30,7 @@ void FragmentCounter::stop_query(Slot& slot) {
 bool FragmentCounter::answered(const Slot& slot) const {
     for (std::size_t i = 0; i < slot.names.size(); ++i) {
         GLuint ready = GL_FALSE;
-        fn_->GetQueryObjectuiv(slot.queries[i].id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+        fn_->GetQueryObjectuiv(slot.queries.id(i), GL_QUERY_RESULT_AVAILABLE, &ready);
         if (ready == GL_FALSE) {
             return false;
         }
@@ -46,7 +42,7 @@ void FragmentCounter::read(Slot& slot) {
     last_passes_.clear();
     for (std::size_t i = 0; i < slot.names.size(); ++i) {
         GLuint samples = 0;
-        fn_->GetQueryObjectuiv(slot.queries[i].id(), GL_QUERY_RESULT, &samples);
+        fn_->GetQueryObjectuiv(slot.queries.id(i), GL_QUERY_RESULT, &samples);
         add_to_pass(last_passes_, slot.names[i], &PassSamples::samples, static_cast<std::uint64_t>(samples));
     }
     slot.pending = false;
@@ -68,7 +64,7 @@ void FragmentCounter::begin() {
     Slot& slot = slots_[static_cast<std::size_t>(current_)];
     slot.pending = false;
     slot.names.clear();
-    slot.used = 0;
+    slot.queries.reset();
     start_query(slot);
 }
 

@@ -12,6 +12,8 @@
 // and a frame still unanswered when its slot comes round is dropped.
 #pragma once
 
+#include "window/query_list.hpp"
+
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
 #include <gl/objects.hpp>
@@ -48,9 +50,8 @@ public:
 private:
     // One frame: queries[i] counts from the (i-1)-th mark (begin() for 0) to the i-th.
     struct Slot {
-        std::vector<gl::Query> queries;
+        QueryList queries;
         std::vector<std::string> names; // names[i] ends queries[i]; one query more (the tail) when ended
-        std::size_t used = 0;
         bool pending = false; // ended, not read yet
         bool counting = false;
     };

@@ -34,28 +34,24 @@ void GpuTimer::stamp(Stamps& stamps) {
     if (!query_counter_) {
         return;
     }
-    if (stamps.used == stamps.queries.size()) {
-        auto made = gl::Query::create(*fn_);
-        if (!made) {
-            return; // no stamp: this frame's passes are left out
-        }
-        stamps.queries.push_back(std::move(*made));
+    auto query = stamps.queries.next(*fn_);
+    if (!query) {
+        return; // no stamp: this frame's passes are left out
     }
-    query_counter_(stamps.queries[stamps.used].id(), kTimestamp);
-    ++stamps.used;
+    query_counter_(*query, kTimestamp);
 }
 
 std::optional<double> GpuTimer::read_stamps(Stamps& stamps) {
     last_passes_.clear();
     std::optional<double> frame_ms;
     // [0] at begin(), one per mark(), the last at end().
-    if (stamps.used == stamps.names.size() + 2) {
-        std::vector<GLuint64> ns(stamps.used, 0);
-        for (std::size_t i = 0; i < stamps.used; ++i) {
-            get_result_(stamps.queries[i].id(), GL_QUERY_RESULT, &ns[i]);
+    if (stamps.queries.used() == stamps.names.size() + 2) {
+        std::vector<GLuint64> ns(stamps.queries.used(), 0);
+        for (std::size_t i = 0; i < ns.size(); ++i) {
+            get_result_(stamps.queries.id(i), GL_QUERY_RESULT, &ns[i]);
         }
         bool valid = ns[0] != 0; // a context without timestamp bits answers 0
-        for (std::size_t i = 1; i < stamps.used; ++i) {
+        for (std::size_t i = 1; i < ns.size(); ++i) {
             valid = valid && ns[i] >= ns[i - 1];
         }
         if (valid) {
@@ -67,7 +63,7 @@ std::optional<double> GpuTimer::read_stamps(Stamps& stamps) {
         }
     }
     stamps.names.clear();
-    stamps.used = 0;
+    stamps.queries.reset();
     return frame_ms;
 }
 
@@ -76,9 +72,9 @@ void GpuTimer::mark(const char* pass) {
         return;
     }
     Stamps& stamps = stamps_[current_];
-    const std::size_t before = stamps.used;
+    const std::size_t before = stamps.queries.used();
     stamp(stamps);
-    if (stamps.used > before) {
+    if (stamps.queries.used() > before) {
         stamps.names.emplace_back(pass);
     }
 }
@@ -99,7 +95,7 @@ void GpuTimer::begin() {
             last_ms_.reset();
             last_passes_.clear();
             stamps_[current_].names.clear();
-            stamps_[current_].used = 0;
+            stamps_[current_].queries.reset();
         } else {
             // The frame from its first and last timestamps where the context
             // has them (llvmpipe's offscreen EGL context answers
@@ -112,7 +108,7 @@ void GpuTimer::begin() {
     }
     fn_->BeginQuery(kTimeElapsed, queries_[current_].id());
     stamps_[current_].names.clear();
-    stamps_[current_].used = 0;
+    stamps_[current_].queries.reset();
     stamp(stamps_[current_]);
 }
 

@@ -11,6 +11,8 @@
 // frame's time is its last stamp minus its first.
 #pragma once
 
+#include "window/query_list.hpp"
+
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
 #include <gl/objects.hpp>
@@ -46,9 +48,8 @@ private:
     using QueryCounter = void (*)(GLuint, GLenum);
     // One frame's stamps: [0] at begin(), [i] as names[i - 1] ends, the last at end().
     struct Stamps {
-        std::vector<gl::Query> queries;
+        QueryList queries;
         std::vector<std::string> names;
-        std::size_t used = 0;
     };
     void stamp(Stamps& stamps);
     // Fills last_passes_; the frame's milliseconds when its stamps answer.
