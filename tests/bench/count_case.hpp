@@ -1,4 +1,4 @@
-// What the instruction-count drivers of scripts/count-aarch64.sh share
+// What the instruction-count drivers of scripts/count-instructions.sh share
 // (count_driver.cpp, count_tiles_driver.cpp): the fixed camera every counted
 // case starts from, a barrier that keeps the compiler from folding the case
 // into constants, and the op-name lookup.

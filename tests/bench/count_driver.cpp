@@ -1,4 +1,4 @@
-// Driver for scripts/count-aarch64.sh: runs one operation `repeats` times
+// Driver for scripts/count-instructions.sh: runs one operation `repeats` times
 // on one fixed, valid case (success path), so that the difference of two
 // instruction counts under qemu divided by the difference of repeats is the
 // cost of one call. Also runs the baselines (new matrix + glm::inverse) and

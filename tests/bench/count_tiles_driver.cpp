@@ -1,4 +1,4 @@
-// Driver for scripts/count-aarch64.sh, batched part: runs one batched
+// Driver for scripts/count-instructions.sh, batched part: runs one batched
 // update of a G x G grid of a 1280 x 720 image `repeats` times on one fixed,
 // valid camera (success path), so that the difference of two instruction
 // counts under qemu divided by the difference of repeats is one call; the

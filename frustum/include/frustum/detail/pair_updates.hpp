@@ -146,7 +146,7 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 
 // z_near, z_far and z_far - z_near of a depth range, by table (no branch).
 template <class T>
-struct ClipDepth {
+struct alignas(4 * sizeof(T)) ClipDepth { // (16 or 32 bytes: the table index is one shift)
     T z_near, z_far, span;
 };
 template <class T>
@@ -161,25 +161,34 @@ FRUSTUM_HOT_INLINE ClipDepth<T> clip_depth(DepthRange depth) {
     return table[static_cast<int>(depth)];
 }
 
-// The clip plane in clip space and what k needs, formed in the wider type
-// (double for float pairs: every product of two floats is exact there, so
-// these dot products lose almost nothing to rounding, and k is rounded to
-// float once). With M^-1 and row 3 m3 of the pair k is taken from (the pair
-// itself for a plain clip, the unreflected pair for a mirror, see
-// oblique_clip_core.hpp):
-//   d_j = p . M^-1_j,   e_j = m3 . M^-1_j,   c' = k_sign d (rounded to T),
-// k_sign = -1 for a mirror (c' = -(M^-T c) there). For Q = M^-1 q:
-// c . Q = d . q and m3 . Q = e . q.
+// The clip plane in clip space and what k needs. With M^-1 and row 3 m3 of
+// the pair k is taken from (the pair itself for a plain clip, the
+// unreflected pair for a mirror, see oblique_clip_core.hpp):
+//   d_j = p . M^-1_j,   c' = k_sign d (rounded to T),
+// k_sign = -1 for a mirror (c' = -(M^-T c) there). Two ways to k's dot
+// products c . Q and m3 . Q for Q = M^-1 q:
+// - In double (W = double: float pairs on x86-64 and wasm, and double
+//   pairs): d and e_j = m3 . M^-1_j in double, then c . Q = d . q and
+//   m3 . Q = e . q. For float pairs every product of two floats is exact
+//   there, so k is rounded about once.
+// - Same Q, in float (W = float: float pairs on aarch64): Q = M^-1 q, then
+//   both dot products from that one Q (eq. 20-21): their common rounding
+//   cancels in the quotient. (d . q and e . q in float round e apart from
+//   Q; measured on aarch64 that raised clip's mean error by 50-80%, above
+//   re-inverting: docs/analytic-inverse-accuracy.md.)
 template <class T>
 struct ClipPlane {
-    V4<typename Wider<T>::type> d, e;
+    V4<typename Wider<T>::type> d, e; // e: M^-T m3 (in double), or m3 itself (same Q)
     V4<T> c_clip;
 };
 template <bool Mirror, class T>
 FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>& k_row3, const V4<T>& p) {
     using W = typename Wider<T>::type;
     ClipPlane<T> out;
-    if constexpr (std::is_same_v<W, double>) {
+    if constexpr (std::is_same_v<W, float>) {
+        out.d = dots(transpose(k_inverse), p);
+        out.e = k_row3;
+    } else if constexpr (std::is_same_v<T, float>) {
         column_dots_double(k_inverse, p, k_row3, out.d, out.e);
     } else {
         const Cols<T> rows = transpose(k_inverse);
@@ -217,17 +226,24 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     const T eye_side = depth.span * plane.c_clip[2];
     const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
 
-    // k = (m3 . Q) / (c . Q) from one Q = M^-1 q (eq. 20-21,
-    // analytic-inverse-accuracy.md), q = (sign c'_x, sign c'_y, z_f, 1)
-    // (erratum 2): both dot products from d and e.
+    // k = (m3 . Q) / (c . Q) (eq. 20-21, analytic-inverse-accuracy.md),
+    // q = (sign c'_x, sign c'_y, z_f, 1) (erratum 2): both dot products from
+    // d and e (in double), or from one Q = M^-1 q (same Q); see clip_plane.
     const V4<W> q = signs_xy_with(W(k_sign) * plane.d, W(depth.z_far));
-    const W b = dot<W>(plane.d, q);
-    const W a = W(depth.span * k_sign) * dot<W>(plane.e, q);
+    W a, b;
+    if constexpr (std::is_same_v<W, double>) {
+        b = dot<W>(plane.d, q);
+        a = W(depth.span * k_sign) * dot<W>(plane.e, q);
+    } else {
+        const V4<T> big_q = mat_vec(inv, q);
+        b = dot<T>(p, big_q);
+        a = (depth.span * k_sign) * dot<T>(plane.e, big_q);
+    }
     // Far corner on the plane's positive side, not a sliver: c' . q = k_sign b
     // above 64 eps sum |c'_i|. Formed in W; when W is wider than T the float
     // form of the test may differ by a few eps sum |c'_i|, so the fast form
     // asks for 72 (between 64 and 72 the reference form decides).
-    const W scale = ((std::abs(plane.d[0]) + std::abs(plane.d[1])) + std::abs(plane.d[2])) + std::abs(plane.d[3]);
+    const W scale = abs_sum(plane.d);
     const W corner_floor = (std::is_same_v<W, T> ? W(64) : W(72)) * W(eps);
     // All tests formed before one branch (& rather than &&: the compiler
     // would otherwise sink e and the scale past early exits, and spill).

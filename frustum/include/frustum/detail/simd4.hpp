@@ -9,6 +9,7 @@
 #include "frustum/types.hpp"
 
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <type_traits>
 
@@ -249,6 +250,20 @@ inline double dot(const Double4& a, const Double4& b) {
 template <class T>
 inline T dot(const V4<T>& a, const V4<T>& b) {
     return dot(a, b);
+}
+
+// |v_0| + |v_1| + |v_2| + |v_3|. float: summed as dot() sums, (|v_0| +
+// |v_1|) + (|v_2| + |v_3|), the sign bits cleared in one vector operation
+// (on NEON: one bic and two pairwise adds). double: in lane order, which on
+// SSE2's two-lane halves takes no shuffles.
+inline float abs_sum(const V4<float>& v) {
+    typedef int Int4 __attribute__((vector_size(16)));
+    const V4<float> a = (V4<float>)((Int4)v & Int4{INT_MAX, INT_MAX, INT_MAX, INT_MAX});
+    const V4<float> pairs = a + __builtin_shufflevector(a, a, 1, 0, 3, 2);
+    return pairs[0] + pairs[2];
+}
+inline double abs_sum(const Double4& v) {
+    return ((std::abs(v[0]) + std::abs(v[1])) + std::abs(v[2])) + std::abs(v[3]);
 }
 
 // M v as glm computes it.

@@ -1,20 +1,36 @@
 #!/usr/bin/env bash
-# Instructions executed on aarch64 by one call of each hot pair update
-# (success path) and of its baseline "new matrix + glm::inverse" (issue 14).
-# Cross-builds the library and tests/bench/count_driver.cpp with Debian's
-# aarch64-linux-gnu-g++ (-O3, as CMake's Release), runs the driver under
-# qemu-aarch64 with one instruction per translation block and no chaining,
-# and counts the executed blocks ("-d exec" prints one line per block):
+# Instructions executed by one call of each hot pair update (success path)
+# and of its baseline "new matrix + glm::inverse" (issue 14), on aarch64 (the
+# phone-side figure) or x86-64. Builds the library and
+# tests/bench/count_driver.cpp with -O3 (as CMake's Release) for the chosen
+# target, runs the driver under qemu-user with one instruction per
+# translation block and no chaining, and counts the executed blocks
+# ("-d exec" prints one line per block):
 #   per call = (count(R2 repeats) - count(R1 repeats)) / (R2 - R1) - loop,
 # where `loop` is the same for the empty op (the loop's own instructions).
-#   bash scripts/count-aarch64.sh [OUT_DIR]   (default build-aarch64)
-# Needs g++-aarch64-linux-gnu, qemu-user, libglm-dev (install-deps.sh --bench).
+#   bash scripts/count-instructions.sh [aarch64|x86_64] [OUT_DIR]
+#   (default aarch64, OUT_DIR build-count-ARCH)
+# Needs qemu-user, libglm-dev and, for aarch64, g++-aarch64-linux-gnu
+# (install-deps.sh --bench --arm).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-out=${1:-$root/build-aarch64}
+arch=${1:-aarch64}
+case $arch in
+  aarch64)
+    cxx=${CXX_AARCH64:-aarch64-linux-gnu-g++}
+    qemu=(qemu-aarch64 -L "${AARCH64_SYSROOT:-/usr/aarch64-linux-gnu}")
+    ;;
+  x86_64)
+    cxx=${CXX:-g++}
+    qemu=(qemu-x86_64)
+    ;;
+  *)
+    echo "count-instructions.sh: unknown architecture \"$arch\" (expected aarch64 or x86_64)" >&2
+    exit 2
+    ;;
+esac
+out=${2:-$root/build-count-$arch}
 mkdir -p "$out/include"
-cxx=${CXX_AARCH64:-aarch64-linux-gnu-g++}
-sysroot=${AARCH64_SYSROOT:-/usr/aarch64-linux-gnu}
 # GLM is header-only: expose just it, never the host's /usr/include.
 ln -sfn /usr/include/glm "$out/include/glm"
 flags=(-std=c++17 -O3 -DNDEBUG -I"$root/frustum/include" -isystem "$out/include" -I"$root/tests/bench")
@@ -30,7 +46,7 @@ done
 "$cxx" "${flags[@]}" -static "$root/tests/bench/count_driver.cpp" "${objects[@]}" -o "$out/count_driver"
 
 count() { # op repeats -> executed instructions of the whole run
-  qemu-aarch64 -L "$sysroot" -singlestep -d exec,nochain -D /dev/stdout "$out/count_driver" "$1" "$2" |
+  "${qemu[@]}" -singlestep -d exec,nochain -D /dev/stdout "$out/count_driver" "$1" "$2" |
     grep -c '^Trace'
 }
 r1=10
@@ -49,14 +65,14 @@ for op in crop reflect clip mirror; do
 done
 echo "| glm::inverse alone | - | $(($(per_call glm_inverse) - loop)) |"
 echo
-echo "(instructions per call on the success path, $("$cxx" --version | head -1), $(qemu-aarch64 --version | head -1); loop overhead $loop subtracted)"
+echo "($arch, instructions per call on the success path, $("$cxx" --version | head -1), $("${qemu[0]}" --version | head -1); loop overhead $loop subtracted)"
 
 # Batched updates (tests/bench/count_tiles_driver.cpp): one call on a G x G
 # grid of a 1280 x 720 image, counted as above with 1 and 3 calls, divided
 # by G * G: instructions per tile, the call's fixed part included.
 "$cxx" "${flags[@]}" -static "$root/tests/bench/count_tiles_driver.cpp" "${objects[@]}" -o "$out/count_tiles_driver"
 count_tiles() { # op G repeats -> executed instructions of the whole run
-  qemu-aarch64 -L "$sysroot" -singlestep -d exec,nochain -D /dev/stdout "$out/count_tiles_driver" "$1" "$2" "$3" |
+  "${qemu[@]}" -singlestep -d exec,nochain -D /dev/stdout "$out/count_tiles_driver" "$1" "$2" "$3" |
     grep -c '^Trace'
 }
 per_tile() { # op G -> instructions per tile of one call
