@@ -81,4 +81,4 @@ web: deps $(BUILD)/CMakeCache.txt
 fuzz:
 	bash scripts/fuzz.sh $(FUZZ_SECONDS)
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) build-bench build-web build-wasm build-clang build-arm
+	rm -rf $(BUILD) $(ASAN_BUILD) build-bench build-web build-wasm build-clang build-arm build-count-aarch64 build-count-x86_64

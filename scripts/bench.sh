@@ -12,8 +12,15 @@ echo "== accuracy of the analytic inverse updates (float vs double reference)"
 "$bench/ops_accuracy" 100000 | tee "$out/ops_accuracy.md"
 
 echo "== speed: analytic update vs build + glm::inverse (one run, side by side)"
-"$bench/bench_ops" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+# The machine's load before and after: the figures are only comparable
+# within one run. Repetitions are interleaved in random order, so a change
+# of the machine's speed during the run (a shared host) reaches every
+# benchmark alike; medians of 12.
+uptime | tee "$out/bench_ops.load"
+"$bench/bench_ops" --benchmark_repetitions=12 --benchmark_min_time=0.05 \
+  --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/bench_ops.json" --benchmark_out_format=json | tee "$out/bench_ops.txt"
+uptime | tee -a "$out/bench_ops.load"
 
 if [ -x "$bench/bench_render" ]; then
   echo "== rendering cost: tight mirror frustum vs clip plane, tiles, lens tiles, per-frame updates"
