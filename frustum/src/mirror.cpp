@@ -77,9 +77,12 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     // reflect() (eq. 16) with R = I - (2 / |n|^2) n c^T: M R has columns
     // M_j - (2 p_j / |n|^2) M n (their lane 2 is replaced by the clip),
     // R M^-1 columns M^-1_j - (2 (p . M^-1_j) / |n|^2) n, and p . M^-1_j = -c'_j.
-    const V4<T> n{p[0], p[1], p[2], T(0)};
+    // (n from p's lanes, |n|^2 from the clip step's: GCC otherwise keeps the
+    // plane in memory and rebuilds both lane by lane, 15 instructions on
+    // aarch64.)
+    const V4<T> n = detail::with_lane<3>(p, T(0));
     const V4<T> m_n = detail::mat_vec(m, n);
-    const T two_over_length_squared = T(2) / detail::normal_length_squared(plane.abcd);
+    const T two_over_length_squared = T(2) / k.normal_squared;
     const V4<T> two_c = two_over_length_squared * p, two_c_inv = two_over_length_squared * clip_plane.c_clip;
     const V4<T> m_n_xy = detail::xy_pairs(m_n, m_n);
     const V4<T> xy01 = detail::xy_pairs(m.c[0], m.c[1]) - detail::lane_pairs<0, 1>(two_c) * m_n_xy;

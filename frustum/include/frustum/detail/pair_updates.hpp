@@ -146,7 +146,7 @@ FRUSTUM_HOT_INLINE Result<MatrixPair<T>> reflect_unit(const MatrixPair<T>& pair,
 
 // z_near, z_far and z_far - z_near of a depth range, by table (no branch).
 template <class T>
-struct alignas(4 * sizeof(T)) ClipDepth { // (16 or 32 bytes: the table index is one shift)
+struct alignas(16) ClipDepth { // (16 or 32 bytes: the table index is one shift)
     T z_near, z_far, span;
 };
 template <class T>
@@ -185,15 +185,11 @@ template <bool Mirror, class T>
 FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>& k_row3, const V4<T>& p) {
     using W = typename Wider<T>::type;
     ClipPlane<T> out;
-    if constexpr (std::is_same_v<W, float>) {
-        out.d = dots(transpose(k_inverse), p);
-        out.e = k_row3;
-    } else if constexpr (std::is_same_v<T, float>) {
+    if constexpr (std::is_same_v<W, double>) {
         column_dots_double(k_inverse, p, k_row3, out.d, out.e);
     } else {
-        const Cols<T> rows = transpose(k_inverse);
-        out.d = dots(rows, p);
-        out.e = dots(rows, k_row3);
+        out.d = dots(transpose(k_inverse), p);
+        out.e = k_row3;
     }
     out.c_clip = convert<T, W>(Mirror ? -out.d : out.d);
     return out;
@@ -208,6 +204,7 @@ FRUSTUM_HOT_INLINE ClipPlane<T> clip_plane(const Cols<T>& k_inverse, const V4<T>
 template <class T>
 struct ClipScalars {
     T span_k, inv_x2;
+    T normal_squared; // |n|^2 of the plane as given (a mirror reflects with 2 / |n|^2)
     bool ok;
 };
 template <bool Mirror, class T>
@@ -220,11 +217,14 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
 
     // The plane's normal non-zero. (A NaN or infinite coefficient, or an
     // overflowing |p|^2, fails the eye test below: p . p is then not finite.)
+    // (|n|^2 and p . p share their first sum: the same sums as dot().)
     const V4<T> p_squared = p * p;
-    const T normal_squared = (p_squared[0] + p_squared[1]) + p_squared[2];
+    const T p_squared_01 = p_squared[0] + p_squared[1];
+    const T normal_squared = p_squared_01 + p_squared[2];
+    const T p_dot_p = p_squared_01 + (p_squared[2] + p_squared[3]);
     // Eye strictly on the negative side, relative to the eye column's size.
     const T eye_side = depth.span * plane.c_clip[2];
-    const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * dot<T>(p, p);
+    const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * p_dot_p;
 
     // k = (m3 . Q) / (c . Q) (eq. 20-21, analytic-inverse-accuracy.md),
     // q = (sign c'_x, sign c'_y, z_f, 1) (erratum 2): both dot products from
@@ -254,13 +254,13 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
                         (eye_side * eye_side > floor * floor * eye_scale_squared) &
                         (W(k_sign) * b > corner_floor * scale) & (std::abs(a) > W(0));
     if (!usable) {
-        return {T(0), T(0), false};
+        return {T(0), T(0), normal_squared, false};
     }
     // k and 1 / X_2 side by side: two independent divisions, not three in
     // series (X_2 = (z_f - z_n) k c'_z, so 1 / X_2 = b / (a c'_z)).
     const T span_k = T(a / b);
     const T inv_x2 = T(b / (a * W(plane.c_clip[2])));
-    return {span_k, inv_x2, bool(std::isnormal(span_k) & std::isnormal(inv_x2))};
+    return {span_k, inv_x2, normal_squared, bool(std::isnormal(span_k) & std::isnormal(inv_x2))};
 }
 
 // The clipped pair. The new matrix: lanes 0, 1 and 3 of its columns are
