@@ -8,6 +8,7 @@
 // Error of one inverse: max over its columns of |col - ref| / |ref|
 // (columns are points of very different sizes, so each is judged alone),
 // up to the overall sign.
+#include "column_error.hpp"
 #include "random_cases.hpp"
 #include "reinvert.hpp"
 
@@ -25,18 +26,7 @@ using frustum::Mat4;
 using frustum::MatrixPair;
 using frustum::Plane;
 
-// A projective matrix is defined up to a factor: the baseline does not
-// apply the library's sign convention (w > 0 inside), so compare with the
-// better of +value and -value.
-double column_error(const Mat4<float>& value, const Mat4<double>& reference) {
-    double worst[2] = {0.0, 0.0};
-    for (int c = 0; c < 4; ++c) {
-        const double scale = glm::length(reference[c]);
-        worst[0] = std::max(worst[0], glm::length(glm::dvec4(value[c]) - reference[c]) / scale);
-        worst[1] = std::max(worst[1], glm::length(glm::dvec4(value[c]) + reference[c]) / scale);
-    }
-    return std::min(worst[0], worst[1]);
-}
+using bench::column_error;
 
 // How well a float pair agrees with itself: the componentwise residual
 // max_ij |(M inv - I)_ij| / (|M| |inv|)_ij, computed in double. A float
