@@ -8,7 +8,7 @@
 // Error of one inverse: max over its columns of |col - ref| / |ref|
 // (columns are points of very different sizes, so each is judged alone),
 // up to the overall sign.
-#include "column_error.hpp"
+#include "accuracy_measures.hpp"
 #include "random_cases.hpp"
 #include "reinvert.hpp"
 
@@ -49,20 +49,7 @@ double pair_residual(const Mat4<float>& m, const Mat4<float>& inv) {
     return worst;
 }
 
-struct Stats {
-    std::vector<double> errors;
-    void add(double e) { errors.push_back(e); }
-    double mean() const {
-        double s = 0.0;
-        for (double e : errors) s += e;
-        return errors.empty() ? 0.0 : s / static_cast<double>(errors.size());
-    }
-    double quantile(double q) {
-        if (errors.empty()) return 0.0;
-        std::sort(errors.begin(), errors.end());
-        return errors[static_cast<std::size_t>(q * static_cast<double>(errors.size() - 1))];
-    }
-};
+using bench::Stats;
 
 // The paper's clip update read literally (eq. 20-27 in column form): Q from
 // the inverse, k = (m3 . Q) / (c . Q), X = k M^-T c, then T^-1.
