@@ -84,15 +84,13 @@ Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const V4<T> m_n = detail::mat_vec(m, n);
     const T two_over_length_squared = T(2) / k.normal_squared;
     const V4<T> two_c = two_over_length_squared * p, two_c_inv = two_over_length_squared * clip_plane.c_clip;
-    const V4<T> m_n_xy = detail::xy_pairs(m_n, m_n);
-    const V4<T> xy01 = detail::xy_pairs(m.c[0], m.c[1]) - detail::lane_pairs<0, 1>(two_c) * m_n_xy;
-    const V4<T> xy23 = detail::xy_pairs(m.c[2], m.c[3]) - detail::lane_pairs<2, 3>(two_c) * m_n_xy;
+    const detail::OpenColumns<T> reflected = detail::minus_outer(detail::open_columns(m), two_c, m_n);
     const V4<T> row3 = m_row3 - two_c * detail::lane<3>(m_n);
     detail::Cols<T> reflected_inv;
     for (int j = 0; j < 4; ++j) {
         reflected_inv.c[j] = inv.c[j] + two_c_inv[j] * n;
     }
-    return detail::clip_result(xy01, xy23, row3, reflected_inv, p, clip_plane.c_clip, depth, k,
+    return detail::clip_result(reflected, row3, reflected_inv, p, clip_plane.c_clip, depth, k,
                                detail::PairFactory::flipped_traits(pair));
 }
 

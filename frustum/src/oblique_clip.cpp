@@ -119,9 +119,8 @@ Result<MatrixPair<T>> clip_oblique(const MatrixPair<T>& pair, const Plane<T>& pl
     if (!k.ok) {
         return clip_oblique_reference(pair, plane);
     }
-    return detail::clip_result(detail::xy_pairs(m.c[0], m.c[1]), detail::xy_pairs(m.c[2], m.c[3]), m_row3,
-                                      inv, p, clip_plane.c_clip, depth, k,
-                                      detail::PairFactory::traits(pair));
+    return detail::clip_result(detail::open_columns(m), m_row3, inv, p, clip_plane.c_clip, depth, k,
+                               detail::PairFactory::traits(pair));
 }
 
 template Result<MatrixPair<float>> clip_oblique(const MatrixPair<float>&, const Plane<float>&);

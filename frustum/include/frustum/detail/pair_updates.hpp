@@ -218,10 +218,8 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     // The plane's normal non-zero. (A NaN or infinite coefficient, or an
     // overflowing |p|^2, fails the eye test below: p . p is then not finite.)
     // (|n|^2 and p . p share their first sum: the same sums as dot().)
-    const V4<T> p_squared = p * p;
-    const T p_squared_01 = p_squared[0] + p_squared[1];
-    const T normal_squared = p_squared_01 + p_squared[2];
-    const T p_dot_p = p_squared_01 + (p_squared[2] + p_squared[3]);
+    T normal_squared, p_dot_p;
+    squares_xyz_xyzw(p, normal_squared, p_dot_p);
     // Eye strictly on the negative side, relative to the eye column's size.
     const T eye_side = depth.span * plane.c_clip[2];
     const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * p_dot_p;
@@ -263,21 +261,20 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     return {span_k, inv_x2, normal_squared, bool(std::isnormal(span_k) & std::isnormal(inv_x2))};
 }
 
-// The clipped pair. The new matrix: lanes 0, 1 and 3 of its columns are
-// those of the matrix being clipped (xy01 = xy_pairs(column 0, column 1),
-// xy23, and its row 3), row 2 is eq. 22 generalized: (z_f - z_n) k c + z_n m3.
+// The clipped pair. The new matrix: the columns of the matrix being clipped
+// (row3: their lanes 3) with row 2 replaced by eq. 22 generalized:
+// (z_f - z_n) k c + z_n m3.
 // The new inverse from inv, the inverse being clipped, by T^-1 (eq. 26-27),
 // X = (z_f - z_n) k c' + z_n e3: column 2 / X_2, column j - (X_j / X_2)
 // column 2, with X_j / X_2 = c'_j / c'_z for j = 0, 1 and
 // c'_w / c'_z + z_n / X_2 for j = 3 (c' / c'_z does not wait for k, and has
 // fewer roundings).
 template <class T>
-FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_result(const V4<T>& xy01, const V4<T>& xy23, const V4<T>& row3,
-                                                     const Cols<T>& inv, const V4<T>& p, const V4<T>& c_clip,
-                                                     const ClipDepth<T>& depth, const ClipScalars<T>& k,
-                                                     unsigned traits) {
+FRUSTUM_HOT_INLINE Result<MatrixPair<T>> clip_result(const OpenColumns<T>& matrix, const V4<T>& row3, const Cols<T>& inv,
+                                                     const V4<T>& p, const V4<T>& c_clip, const ClipDepth<T>& depth,
+                                                     const ClipScalars<T>& k, unsigned traits) {
     const V4<T> row2 = k.span_k * p + depth.z_near * row3;
-    const Cols<T> m = columns_from_rows23(xy01, xy23, row2, row3);
+    const Cols<T> m = with_rows23(matrix, row2, row3);
     const V4<T> c_over_cz = c_clip / splat(c_clip[2]);
     return PairFactory::keep_sign_result<T>(
         store<T>(m.c[0]), store<T>(m.c[1]), store<T>(m.c[2]), store<T>(m.c[3]),

@@ -236,12 +236,41 @@ inline Cols<double> transpose(const Cols<double>& m) {
              Double4(__builtin_shufflevector(c[0].hi, c[1].hi, 1, 3), __builtin_shufflevector(c[2].hi, c[3].hi, 1, 3))}};
 }
 
-// glm::dot(a, b): (t0 + t1) + (t2 + t3), the pair sums in one vector
-// addition (pairwise adds on NEON, one shuffle and add on SSE).
-inline float dot(const V4<float>& a, const V4<float>& b) {
-    const V4<float> t = a * b;
+// (t0 + t1) + (t2 + t3), glm::dot's order of sums. NEON: one vector and
+// one scalar pairwise add (GCC writes the generic form as a lane reversal,
+// an add, a lane move and an add); SSE: one shuffle and add, then lanes 0
+// and 2.
+inline float sum4(const V4<float>& t) {
+#if defined(__aarch64__)
+    return vpadds_f32(vget_low_f32(vpaddq_f32((float32x4_t)t, (float32x4_t)t)));
+#else
     const V4<float> pairs = t + __builtin_shufflevector(t, t, 1, 0, 3, 2);
     return pairs[0] + pairs[2];
+#endif
+}
+
+// v . v over lanes 0-2 and over all four lanes, sharing their first sum:
+// xyz = (s0 + s1) + s2, xyzw = (s0 + s1) + (s2 + s3) for s = v * v (as
+// glm::dot(vec3) and glm::dot(vec4) sum).
+template <class V, class T>
+inline void squares_xyz_xyzw(const V& v, T& xyz, T& xyzw) {
+    const V s = v * v;
+#if defined(__aarch64__)
+    if constexpr (std::is_same_v<T, float>) {
+        const float32x4_t pairs = vpaddq_f32((float32x4_t)s, (float32x4_t)s); // (s0 + s1, s2 + s3, ...)
+        xyz = vgetq_lane_f32(pairs, 0) + s[2];
+        xyzw = vpadds_f32(vget_low_f32(pairs));
+        return;
+    }
+#endif
+    const T s01 = s[0] + s[1];
+    xyz = s01 + s[2];
+    xyzw = s01 + (s[2] + s[3]);
+}
+
+// glm::dot(a, b): (t0 + t1) + (t2 + t3).
+inline float dot(const V4<float>& a, const V4<float>& b) {
+    return sum4(a * b);
 }
 inline double dot(const Double4& a, const Double4& b) {
     const Double4 t = a * b;
@@ -258,9 +287,7 @@ inline T dot(const V4<T>& a, const V4<T>& b) {
 // SSE2's two-lane halves takes no shuffles.
 inline float abs_sum(const V4<float>& v) {
     typedef int Int4 __attribute__((vector_size(16)));
-    const V4<float> a = (V4<float>)((Int4)v & Int4{INT_MAX, INT_MAX, INT_MAX, INT_MAX});
-    const V4<float> pairs = a + __builtin_shufflevector(a, a, 1, 0, 3, 2);
-    return pairs[0] + pairs[2];
+    return sum4((V4<float>)((Int4)v & Int4{INT_MAX, INT_MAX, INT_MAX, INT_MAX}));
 }
 inline double abs_sum(const Double4& v) {
     return ((std::abs(v[0]) + std::abs(v[1])) + std::abs(v[2])) + std::abs(v[3]);
@@ -318,6 +345,59 @@ inline Cols<double> columns_from_rows23(const Double4& xy01, const Double4& xy23
              Double4(xy01.hi, __builtin_shufflevector(row2.lo, row3.lo, 1, 3)),
              Double4(xy23.lo, __builtin_shufflevector(row2.hi, row3.hi, 0, 2)),
              Double4(xy23.hi, __builtin_shufflevector(row2.hi, row3.hi, 1, 3))}};
+}
+
+// The columns of a matrix whose row 2 is still to be written (the oblique
+// clip replaces it): lanes 0 and 1 of each column, lane 3 given as the row
+// apart. SSE2, which has no lane insert, keeps the xy pairs of columns 0-1
+// and 2-3 and rebuilds the columns from them and the rows (six shuffles for
+// four inserts); NEON keeps the whole columns and inserts the four lanes.
+template <class T>
+struct OpenColumns {
+    static constexpr bool whole = false;
+    V4<T> xy01, xy23; // xy_pairs(column 0, column 1), xy_pairs(column 2, column 3)
+};
+#if defined(__aarch64__)
+template <>
+struct OpenColumns<float> {
+    static constexpr bool whole = true;
+    Cols<float> m; // lane 2 unused
+};
+#endif
+template <class T>
+inline OpenColumns<T> open_columns(const Cols<T>& m) {
+    if constexpr (OpenColumns<T>::whole) {
+        return {m};
+    } else {
+        return {xy_pairs(m.c[0], m.c[1]), xy_pairs(m.c[2], m.c[3])};
+    }
+}
+// Column j minus u_j v (a rank-one update). Lane 2 is written afterwards
+// by with_rows23; the SSE2 form computes lanes 0 and 1 only, its lane 3
+// comes from the row handed to with_rows23.
+template <class T>
+inline OpenColumns<T> minus_outer(const OpenColumns<T>& m, const V4<T>& u, const V4<T>& v) {
+    if constexpr (OpenColumns<T>::whole) {
+        OpenColumns<T> out;
+        for (int j = 0; j < 4; ++j) {
+            out.m.c[j] = m.m.c[j] - u[j] * v;
+        }
+        return out;
+    } else {
+        const V4<T> v_xy = xy_pairs(v, v);
+        return {m.xy01 - lane_pairs<0, 1>(u) * v_xy, m.xy23 - lane_pairs<2, 3>(u) * v_xy};
+    }
+}
+// Column j = (x_j, y_j, row2_j, row3_j).
+template <class T>
+inline Cols<T> with_rows23(const OpenColumns<T>& m, const V4<T>& row2, const V4<T>& row3) {
+    if constexpr (OpenColumns<T>::whole) {
+        (void)row3; // lane 3 of the columns already
+        return {{with_lane<2>(m.m.c[0], row2[0]), with_lane<2>(m.m.c[1], row2[1]), with_lane<2>(m.m.c[2], row2[2]),
+                 with_lane<2>(m.m.c[3], row2[3])}};
+    } else {
+        return columns_from_rows23(m.xy01, m.xy23, row2, row3);
+    }
 }
 
 // (a . cols_j)_j and (b . cols_j)_j in double, column by column: the halves
