@@ -6,6 +6,7 @@
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/tile_grid_writer.hpp"
 #include "frustum/from_planes.hpp"
+#include "frustum/projection.hpp"
 #include "frustum/queries.hpp"
 
 #include <cmath>
@@ -38,6 +39,12 @@ Plane<T> edge_plane(const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b) {
 // on its own would evaluate (lens_warp of the same pixel, the same cross
 // product and normalization; facing() per tile), so the bits are those of
 // building each tile alone. `out` gets the crop_tiles() layout.
+//
+// Everything is relative to the eye (the eye at the origin: side planes
+// through it have d = 0); `finish` gets the eye and moves the tile back to
+// the world (world_to_eye below). Built in world coordinates, a camera 5 km
+// from the origin gave side rows whose w parts are 5000 times their
+// normals, and from_planes refused them as dependent.
 template <class T, class Finish>
 Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
                  int rows, TileGrid<T>& out, Finish&& finish) {
@@ -66,15 +73,21 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
     // How much farther the far plane is than the near plane, seen from the eye.
     const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
                         std::abs(camera_planes.near.distance(frame->eye));
-    const Vec3<T>& eye = frame->eye;
+    const Vec3<T> eye(T(0));
+    // The near-plane frame and near plane relative to the eye (far from the
+    // origin center - eye loses nothing: nearby floats subtract exactly).
+    NearPlaneFrame<T> relative = *frame;
+    relative.center = frame->center - frame->eye;
+    relative.eye = eye;
+    const Plane<T> near_plane = Plane<T>::at(camera_planes.near.normal(), relative.center);
 
     // A moved point of the refraction plane for the pixel position (x, y).
     const auto moved = [&](int x_px, int y_px) {
         const Vec2<T> ndc(T(-1) + T(2) * T(x_px) / T(width_px), T(-1) + T(2) * T(y_px) / T(height_px));
         const Vec2<T> plane_m(ndc.x * frame->half_width_m, ndc.y * frame->half_height_m);
-        return frame->point(lens_warp(plane_m, lens));
+        return relative.point(lens_warp(plane_m, lens));
     };
-    const auto far_point = [&](const Vec3<T>& corner) { return eye + (corner - eye) * far_ratio; };
+    const auto far_point = [&](const Vec3<T>& corner) { return corner * far_ratio; };
     const std::size_t n = static_cast<std::size_t>(columns) + 1;
     // Corners, far points and the planes along the bottom edges of the row
     // of tiles being built (index r) and of the one above (r + 1).
@@ -106,17 +119,25 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
             const Vec3<T> inside = (bottom_left + bottom_right + top_right + top_left) / T(4);
             const SidePlanes<T> sides{vertical[k].facing(inside), vertical[k + 1].facing(inside),
                                       horizontal[lo + k].facing(inside), horizontal[hi + k].facing(inside),
-                                      camera_planes.near};
+                                      near_plane};
             // The far plane keeps each moved corner's ray inside up to the
             // camera's far distance (one far point would tilt it into the tile).
             const Vec3<T> tile_far[4] = {far_points[lo + k], far_points[lo + k + 1], far_points[hi + k + 1],
                                          far_points[hi + k]};
-            if (Status status = finish(out.index(c, r), c, r, sides, tile_far); !status) {
+            if (Status status = finish(out.index(c, r), c, r, sides, tile_far, frame->eye); !status) {
                 return failed(status.take_error());
             }
         }
     }
     return {};
+}
+
+// World to eye-relative coordinates, T(-eye): a tile built relative to the
+// eye is compose(tile, world_to_eye(eye)), i.e. M T(-eye) and T(eye) M^-1
+// (analytic).
+template <class T>
+RigidTransform<T> world_to_eye(const Vec3<T>& eye) {
+    return RigidTransform<T>::from_rotation_translation(Mat3<T>(T(1)), -eye);
 }
 
 // A tile's lens frustum failed: the error names the tile.
@@ -132,14 +153,16 @@ Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px
                   int rows, TileGrid<T>& out) {
     using detail::TileGridWriter;
     return lens_grid(camera, lens, width_px, height_px, columns, rows, out,
-                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far) -> Status {
-                         auto pair = detail::from_planes_points(sides, far, 4, camera.depth());
-                         if (!pair) {
-                             return tile_error(c, r, pair.error());
+                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
+                         const Vec3<T>& eye) -> Status {
+                         auto relative = detail::from_planes_points(sides, far, 4, camera.depth());
+                         if (!relative) {
+                             return tile_error(c, r, relative.error());
                          }
-                         TileGridWriter::matrices(out)[i] = pair->matrix();
-                         TileGridWriter::inverses(out)[i] = pair->inverse();
-                         TileGridWriter::set_traits(out, detail::PairFactory::traits(*pair));
+                         const MatrixPair<T> pair = compose(*relative, world_to_eye(eye));
+                         TileGridWriter::matrices(out)[i] = pair.matrix();
+                         TileGridWriter::inverses(out)[i] = pair.inverse();
+                         TileGridWriter::set_traits(out, detail::PairFactory::traits(pair));
                          return {};
                      });
 }
@@ -161,12 +184,13 @@ Status lens_tile_matrices(const MatrixPair<T>& camera, const Lens<T>& lens, int 
                           int columns, int rows, TileGrid<T>& layout, std::vector<Mat4<T>>& matrices) {
     matrices.resize(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
     return lens_grid(camera, lens, width_px, height_px, columns, rows, layout,
-                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far) -> Status {
+                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
+                         const Vec3<T>& eye) -> Status {
                          auto m = from_planes_matrix(sides, far, 4, camera.depth());
                          if (!m) {
                              return tile_error(c, r, m.error());
                          }
-                         matrices[i] = *m;
+                         matrices[i] = *m * world_to_eye(eye).matrix;
                          return {};
                      });
 }

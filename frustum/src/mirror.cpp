@@ -1,6 +1,7 @@
 #include "frustum/mirror.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/eye_side.hpp"
 #include "frustum/detail/finite.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_updates.hpp"
@@ -36,7 +37,7 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
     // The real eye must be in front of the mirror (its reflection then lies
     // behind the clip plane): say so in the mirror's terms.
     const T eye_side = clip_z_span<T>(pair.depth()) * c_clip.z;
-    const T floor = T(64) * std::numeric_limits<T>::epsilon() * glm::length(pair.inverse()[2]);
+    const T floor = detail::eye_side_floor(unit->abcd, pair.inverse()[2]);
     if (!(eye_side > floor)) {
         const Vec4<T> eye = to_point(pair.inverse()[2], infinity_tolerance<T>());
         const std::string where = eye.w == T(1) ? " eye_distance=" + detail::number(unit->distance(Vec3<T>(eye))) : "";
@@ -60,7 +61,7 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
 // normalized (the clip is scale-invariant) and reflect() uses
 // R = I - (2 / |n|^2) n c^T. Every refusal goes through the reference form:
 // its tests (the plane's, the eye in front of the mirror) are implied by
-// the clip step's (the eye test with p . p >= |n|^2).
+// the clip step's (the same scale-free eye test, and p . p finite).
 template <class T>
 Result<MatrixPair<T>> mirror(const MatrixPair<T>& pair, const Plane<T>& plane) {
     using detail::V4;

@@ -1,6 +1,7 @@
 #include "frustum/oblique_clip.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/eye_side.hpp"
 #include "frustum/detail/oblique_clip_core.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/pair_updates.hpp"
@@ -23,13 +24,12 @@ Result<MatrixPair<T>> clip_oblique_in_clip_space(const MatrixPair<T>& pair, cons
     const T span = z_far - z_near;
     const T eps = std::numeric_limits<T>::epsilon();
 
-    // Eye strictly on the negative side: (z_f - z_n) c'_z > 0, relative to
-    // the size of the eye column so the test is scale-free.
+    // Eye strictly on the negative side: (z_f - z_n) c'_z > 0, above the
+    // rounding floor of c . M^-1_2 (eye_side.hpp), so the test is scale-free.
     const T eye_side = span * c_clip.z;
-    const T eye_scale_squared = glm::dot(inv[2], inv[2]) * glm::dot(c, c);
-    const T floor = T(64) * eps;
-    if (!(eye_side > T(0) && eye_side * eye_side > floor * floor * eye_scale_squared)) {
-        const bool through = eye_side * eye_side <= floor * floor * eye_scale_squared;
+    const T floor = eye_side_floor(c, inv[2]);
+    if (!(eye_side > floor)) {
+        const bool through = std::abs(eye_side) <= floor;
         return error_text(function,
                           through ? "clip plane must not pass through the eye"
                                   : "the eye must be on the clip plane's negative side",

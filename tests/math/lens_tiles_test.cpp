@@ -163,7 +163,8 @@ TEST_CASE("from_planes with several far points takes the nearest plane that keep
 
 // One tile's lens frustum built on its own, as lens_tiles() did before it
 // shared corners and edge planes between neighbours: four warped corners,
-// four side planes and a vector of four far points per tile.
+// four side planes and a vector of four far points per tile, relative to
+// the eye, then moved to the world (M T(-eye), T(eye) M^-1).
 template <class T>
 Result<MatrixPair<T>> lens_tile_alone(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
                                       int height_px, const Tile<T>& tile) {
@@ -171,24 +172,28 @@ Result<MatrixPair<T>> lens_tile_alone(const MatrixPair<T>& camera, const Lens<T>
     const auto camera_planes = planes(camera);
     const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
                         std::abs(camera_planes.near.distance(frame->eye));
+    NearPlaneFrame<T> relative = *frame;
+    relative.center = frame->center - frame->eye;
     const auto moved = [&](int x_px, int y_px) {
         const Vec2<T> ndc(T(-1) + T(2) * T(x_px) / T(width_px), T(-1) + T(2) * T(y_px) / T(height_px));
         const Vec2<T> plane_m(ndc.x * frame->half_width_m, ndc.y * frame->half_height_m);
-        return frame->point(lens_warp(plane_m, lens));
+        return relative.point(lens_warp(plane_m, lens));
     };
-    const auto side = [](const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
-        return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye).facing(inside);
+    const auto side = [](const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& inside) {
+        return Plane<T>::at(glm::normalize(glm::cross(a, b)), Vec3<T>(T(0))).facing(inside);
     };
     const int x0 = tile.x_px, x1 = tile.x_px + tile.width_px;
     const int y0 = tile.y_px, y1 = tile.y_px + tile.height_px;
     const Vec3<T> bl = moved(x0, y0), br = moved(x1, y0), tr = moved(x1, y1), tl = moved(x0, y1);
     const Vec3<T> inside = (bl + br + tr + tl) / T(4);
-    const Vec3<T>& eye = frame->eye;
-    const SidePlanes<T> sides{side(eye, bl, tl, inside), side(eye, br, tr, inside), side(eye, bl, br, inside),
-                              side(eye, tl, tr, inside), camera_planes.near};
-    const std::vector<Vec3<T>> far{eye + (bl - eye) * far_ratio, eye + (br - eye) * far_ratio,
-                                   eye + (tr - eye) * far_ratio, eye + (tl - eye) * far_ratio};
-    return from_planes(sides, far, camera.depth());
+    const SidePlanes<T> sides{side(bl, tl, inside), side(br, tr, inside), side(bl, br, inside),
+                              side(tl, tr, inside), Plane<T>::at(camera_planes.near.normal(), relative.center)};
+    const std::vector<Vec3<T>> far{bl * far_ratio, br * far_ratio, tr * far_ratio, tl * far_ratio};
+    const auto pair = from_planes(sides, far, camera.depth());
+    if (!pair) {
+        return pair;
+    }
+    return compose(*pair, RigidTransform<T>::from_rotation_translation(Mat3<T>(T(1)), -frame->eye));
 }
 
 TEST_CASE_TEMPLATE("lens_tiles into a TileGrid: each tile bit for bit the tile built alone", T, float, double) {

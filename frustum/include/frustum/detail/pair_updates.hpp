@@ -215,14 +215,15 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     const T eps = std::numeric_limits<T>::epsilon();
     const T floor = T(64) * eps;
 
-    // The plane's normal non-zero. (A NaN or infinite coefficient, or an
-    // overflowing |p|^2, fails the eye test below: p . p is then not finite.)
+    // The plane's normal non-zero, and p . p finite (a NaN or infinite
+    // coefficient, or an overflowing |p|^2, is the reference form's to refuse).
     // (|n|^2 and p . p share their first sum: the same sums as dot().)
     T normal_squared, p_dot_p;
     squares_xyz_xyzw(p, normal_squared, p_dot_p);
-    // Eye strictly on the negative side, relative to the eye column's size.
+    // Eye strictly on the negative side, above the rounding floor of
+    // p . M^-1_2 (eye_side_floor, eye_side.hpp: sum_i |p_i| |M^-1_2,i|).
     const T eye_side = depth.span * plane.c_clip[2];
-    const T eye_scale_squared = dot<T>(inv.c[2], inv.c[2]) * p_dot_p;
+    const T eye_floor = floor * abs_dot(p, inv.c[2]);
 
     // k = (m3 . Q) / (c . Q) (eq. 20-21, analytic-inverse-accuracy.md),
     // q = (sign c'_x, sign c'_y, z_f, 1) (erratum 2): both dot products from
@@ -248,8 +249,8 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     // The divisions only once their divisors are known non-zero (a plane
     // through the eye has c'_z = 0): no division by zero, also under
     // -fsanitize=float-divide-by-zero.
-    const bool usable = (normal_squared > T(0)) & (eye_side > T(0)) &
-                        (eye_side * eye_side > floor * floor * eye_scale_squared) &
+    const bool usable = (normal_squared > T(0)) & (p_dot_p <= std::numeric_limits<T>::max()) &
+                        (eye_side > eye_floor) &
                         (W(k_sign) * b > corner_floor * scale) & (std::abs(a) > W(0));
     if (!usable) {
         return {T(0), T(0), normal_squared, false};

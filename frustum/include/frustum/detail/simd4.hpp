@@ -293,6 +293,15 @@ inline double abs_sum(const Double4& v) {
     return ((std::abs(v[0]) + std::abs(v[1])) + std::abs(v[2])) + std::abs(v[3]);
 }
 
+// |a_0 b_0| + |a_1 b_1| + |a_2 b_2| + |a_3 b_3| (= sum_i |a_i| |b_i|, a
+// rounding floor: the order of sums is not kept).
+inline float abs_dot(const V4<float>& a, const V4<float>& b) {
+    return abs_sum(a * b);
+}
+inline double abs_dot(const Double4& a, const Double4& b) {
+    return abs_sum(a * b);
+}
+
 // M v as glm computes it.
 template <class T>
 inline V4<T> mat_vec(const Cols<T>& m, const V4<T>& v) {
