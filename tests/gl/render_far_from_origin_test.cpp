@@ -84,7 +84,9 @@ TEST_CASE("every effect 5 km from the origin looks as it does at the origin") {
         int max_different_px;
     } cases[] = {{std::filesystem::path(FRUSTUM_SOURCE_DIR) / "assets/showcase.gltf", kMaxDifferentShowcase},
                  {samples / "BoxTextured/BoxTextured.gltf", kMaxDifferentBox}};
-    for (const auto& [file, max_different_px] : cases) {
+    for (const auto& c : cases) {
+        const std::filesystem::path& file = c.file;
+        const int max_different_px = c.max_different_px;
         INFO(file.filename().string());
         const auto scene = scene::load_gltf(file.string());
         REQUIRE_MESSAGE(scene.ok(), scene.error());

@@ -249,7 +249,8 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     // The divisions only once their divisors are known non-zero (a plane
     // through the eye has c'_z = 0): no division by zero, also under
     // -fsanitize=float-divide-by-zero.
-    const bool usable = (normal_squared > T(0)) & (p_dot_p <= std::numeric_limits<T>::max()) &
+    const T largest = std::numeric_limits<T>::max();
+    const bool usable = (normal_squared > T(0)) & (p_dot_p <= largest) &
                         (eye_side > eye_floor) &
                         (W(k_sign) * b > corner_floor * scale) & (std::abs(a) > W(0));
     if (!usable) {
@@ -259,7 +260,8 @@ FRUSTUM_HOT_INLINE ClipScalars<T> clip_scalars(const Cols<T>& inv, const V4<T>& 
     // series (X_2 = (z_f - z_n) k c'_z, so 1 / X_2 = b / (a c'_z)).
     const T span_k = T(a / b);
     const T inv_x2 = T(b / (a * W(plane.c_clip[2])));
-    return {span_k, inv_x2, normal_squared, bool(std::isnormal(span_k) & std::isnormal(inv_x2))};
+    const bool normal_k = std::isnormal(span_k), normal_x2 = std::isnormal(inv_x2);
+    return {span_k, inv_x2, normal_squared, bool(normal_k & normal_x2)};
 }
 
 // The clipped pair. The new matrix: the columns of the matrix being clipped
