@@ -26,23 +26,32 @@ Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens) {
 
 namespace {
 
-// The plane through the eye and two points, unit normal (a tile faces it
-// inward with facing()).
+// The plane through the eye (the origin, lens_grid works relative to it)
+// and two points, unit normal (a tile faces it inward with facing()).
 template <class T>
-Plane<T> edge_plane(const Vec3<T>& eye, const Vec3<T>& a, const Vec3<T>& b) {
-    return Plane<T>::at(glm::normalize(glm::cross(a - eye, b - eye)), eye);
+Plane<T> edge_plane(const Vec3<T>& a, const Vec3<T>& b) {
+    return Plane<T>::at(glm::normalize(glm::cross(a, b)), Vec3<T>(T(0)));
+}
+
+// World to eye-relative coordinates, T(-eye): a tile built relative to the
+// eye is compose(tile, world_to_eye(eye)), i.e. M T(-eye) and T(eye) M^-1
+// (analytic).
+template <class T>
+RigidTransform<T> world_to_eye(const Vec3<T>& eye) {
+    return RigidTransform<T>::from_rotation_translation(Mat3<T>(T(1)), -eye);
 }
 
 // The planes and far points of every tile, built once per grid line and
-// corner and handed to `finish(index, column, row, sides, far_points)` tile
-// by tile. Shared corners and edge planes are the same expressions a tile
-// on its own would evaluate (lens_warp of the same pixel, the same cross
-// product and normalization; facing() per tile), so the bits are those of
-// building each tile alone. `out` gets the crop_tiles() layout.
+// corner and handed to `finish(index, column, row, sides, far_points,
+// to_eye)` tile by tile. Shared corners and edge planes are the same
+// expressions a tile on its own would evaluate (lens_warp of the same
+// pixel, the same cross product and normalization; facing() per tile), so
+// the bits are those of building each tile alone. `out` gets the
+// crop_tiles() layout.
 //
 // Everything is relative to the eye (the eye at the origin: side planes
-// through it have d = 0); `finish` gets the eye and moves the tile back to
-// the world (world_to_eye below). Built in world coordinates, a camera 5 km
+// through it have d = 0); `finish` moves the tile back to the world with
+// to_eye = world_to_eye(eye). Built in world coordinates, a camera 5 km
 // from the origin gave side rows whose w parts are 5000 times their
 // normals, and from_planes refused them as dependent.
 template <class T, class Finish>
@@ -73,12 +82,12 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
     // How much farther the far plane is than the near plane, seen from the eye.
     const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
                         std::abs(camera_planes.near.distance(frame->eye));
-    const Vec3<T> eye(T(0));
     // The near-plane frame and near plane relative to the eye (far from the
     // origin center - eye loses nothing: nearby floats subtract exactly).
     NearPlaneFrame<T> relative = *frame;
     relative.center = frame->center - frame->eye;
-    relative.eye = eye;
+    relative.eye = Vec3<T>(T(0));
+    const RigidTransform<T> to_eye = world_to_eye(frame->eye);
     const Plane<T> near_plane = Plane<T>::at(camera_planes.near.normal(), relative.center);
 
     // A moved point of the refraction plane for the pixel position (x, y).
@@ -99,7 +108,7 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
             corners[k] = moved(out.x_px(c), out.y_px(r));
             far_points[k] = far_point(corners[k]);
             if (c > 0) { // the plane through this corner and the one to its left
-                horizontal[k - 1] = edge_plane(eye, corners[k - 1], corners[k]);
+                horizontal[k - 1] = edge_plane(corners[k - 1], corners[k]);
             }
         }
     };
@@ -108,7 +117,7 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
         const std::size_t lo = static_cast<std::size_t>(r % 2) * n, hi = n - lo; // bottom, top halves
         corner_row(r + 1, hi / n);
         for (std::size_t c = 0; c < n; ++c) {
-            vertical[c] = edge_plane(eye, corners[lo + c], corners[hi + c]);
+            vertical[c] = edge_plane(corners[lo + c], corners[hi + c]);
         }
         for (int c = 0; c < columns; ++c) {
             const std::size_t k = static_cast<std::size_t>(c);
@@ -124,20 +133,12 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
             // camera's far distance (one far point would tilt it into the tile).
             const Vec3<T> tile_far[4] = {far_points[lo + k], far_points[lo + k + 1], far_points[hi + k + 1],
                                          far_points[hi + k]};
-            if (Status status = finish(out.index(c, r), c, r, sides, tile_far, frame->eye); !status) {
+            if (Status status = finish(out.index(c, r), c, r, sides, tile_far, to_eye); !status) {
                 return failed(status.take_error());
             }
         }
     }
     return {};
-}
-
-// World to eye-relative coordinates, T(-eye): a tile built relative to the
-// eye is compose(tile, world_to_eye(eye)), i.e. M T(-eye) and T(eye) M^-1
-// (analytic).
-template <class T>
-RigidTransform<T> world_to_eye(const Vec3<T>& eye) {
-    return RigidTransform<T>::from_rotation_translation(Mat3<T>(T(1)), -eye);
 }
 
 // A tile's lens frustum failed: the error names the tile.
@@ -154,12 +155,12 @@ Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px
     using detail::TileGridWriter;
     return lens_grid(camera, lens, width_px, height_px, columns, rows, out,
                      [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
-                         const Vec3<T>& eye) -> Status {
+                         const RigidTransform<T>& to_eye) -> Status {
                          auto relative = detail::from_planes_points(sides, far, 4, camera.depth());
                          if (!relative) {
                              return tile_error(c, r, relative.error());
                          }
-                         const MatrixPair<T> pair = compose(*relative, world_to_eye(eye));
+                         const MatrixPair<T> pair = compose(*relative, to_eye);
                          TileGridWriter::matrices(out)[i] = pair.matrix();
                          TileGridWriter::inverses(out)[i] = pair.inverse();
                          TileGridWriter::set_traits(out, detail::PairFactory::traits(pair));
@@ -185,12 +186,12 @@ Status lens_tile_matrices(const MatrixPair<T>& camera, const Lens<T>& lens, int 
     matrices.resize(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
     return lens_grid(camera, lens, width_px, height_px, columns, rows, layout,
                      [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
-                         const Vec3<T>& eye) -> Status {
+                         const RigidTransform<T>& to_eye) -> Status {
                          auto m = from_planes_matrix(sides, far, 4, camera.depth());
                          if (!m) {
                              return tile_error(c, r, m.error());
                          }
-                         matrices[i] = *m * world_to_eye(eye).matrix;
+                         matrices[i] = *m * to_eye.matrix;
                          return {};
                      });
 }

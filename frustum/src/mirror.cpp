@@ -35,16 +35,11 @@ FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, c
     // plane in itself only flips its sign.
     const Vec4<T> c_clip = -(glm::transpose(pair.inverse()) * unit->abcd);
     // The real eye must be in front of the mirror (its reflection then lies
-    // behind the clip plane): say so in the mirror's terms.
-    const T eye_side = clip_z_span<T>(pair.depth()) * c_clip.z;
-    const T floor = detail::eye_side_floor(unit->abcd, pair.inverse()[2]);
-    if (!(eye_side > floor)) {
-        const Vec4<T> eye = to_point(pair.inverse()[2], infinity_tolerance<T>());
-        const std::string where = eye.w == T(1) ? " eye_distance=" + detail::number(unit->distance(Vec3<T>(eye))) : "";
-        return detail::error_text("mirror",
-                                  std::abs(eye_side) <= floor ? "mirror plane must not pass through the eye"
-                                                              : "the eye must be on the mirror plane's positive (front) side",
-                                  "plane=" + detail::vector_text(unit->abcd) + where);
+    // behind the clip plane): say so in the mirror's terms, as culling_pair does.
+    if (const auto error = detail::eye_in_front(pair, *unit, "mirror", "plane",
+                                                "mirror plane must not pass through the eye",
+                                                "the eye must be on the mirror plane's positive (front) side")) {
+        return *error;
     }
     auto clipped = detail::clip_oblique_in_clip_space(*reflected, unit->abcd, c_clip, pair, T(-1), "mirror");
     if (!clipped) {

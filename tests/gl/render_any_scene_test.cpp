@@ -7,8 +7,6 @@
 #include "render_test_support.hpp"
 
 #include <plan/mirror_geometry.hpp>
-#include <plan/mirror_placement.hpp>
-#include <plan/scene_fit.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -70,21 +68,13 @@ TEST_CASE("every effect on every sample and the showcase, both backends: non-fla
             INFO(gl::to_string(backend) << " " << file.filename().string());
             auto scene = scene::load_gltf(file.string());
             REQUIRE_MESSAGE(scene.ok(), scene.error());
-            render::place_mirror(*scene, render::MirrorRequest{});
-            REQUIRE(scene->mirror);
-            const auto index = render::find_camera(*scene, std::nullopt);
-            REQUIRE_MESSAGE(index.ok(), index.error());
-            const auto cameras = render::make_cameras(*scene, *index, kWidthPx, kHeightPx);
-            REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-            auto renderer = render::Renderer::create(*env->context, env->fn, *scene);
-            REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-            render::RenderOptions o = render_test::options(kWidthPx, kHeightPx);
-            o.curved.sagitta_m = render::fit_sagitta_m(*scene->mirror, o.curved.shape);
+            const render_test::DerivedScene derived = render_test::derive_scene(*env, *scene, kWidthPx, kHeightPx);
+            const render::Cameras& cameras = derived.cameras;
 
             std::map<render::Effect, image::Image> pictures;
             for (render::Effect effect : render::kAllEffects) {
                 INFO(render::to_string(effect));
-                auto picture = renderer->render(effect, *cameras, o);
+                auto picture = derived.renderer->render(effect, cameras, derived.options);
                 REQUIRE_MESSAGE(picture.ok(), picture.error());
                 const int not_sky = not_sky_pixels(*picture);
                 CHECK(not_sky >= kMinNotSkyPixels);
@@ -96,7 +86,7 @@ TEST_CASE("every effect on every sample and the showcase, both backends: non-fla
                 pictures.emplace(effect, std::move(*picture));
             }
 
-            const auto rect = render::mirror_screen_rect(*scene->mirror, cameras->main.pair, kWidthPx, kHeightPx);
+            const auto rect = render::mirror_screen_rect(*scene->mirror, cameras.main.pair, kWidthPx, kHeightPx);
             REQUIRE_MESSAGE(rect, "the mirror is off-screen");
             const image::Image& plain = pictures.at(render::Effect::Plain);
             const image::Image& mirror = pictures.at(render::Effect::Mirror);

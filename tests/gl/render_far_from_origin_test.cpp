@@ -3,11 +3,7 @@
 // whole scene (instances, cameras, mirror, lens spot, bounds) is moved by
 // (5000, 120, -2000) m, as a glTF parent node with that translation would,
 // and each effect's picture is compared with the one at the origin.
-#include "../sample_files.hpp"
 #include "render_test_support.hpp"
-
-#include <plan/mirror_placement.hpp>
-#include <plan/scene_fit.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -47,19 +43,11 @@ void move_scene(scene::Scene& s, const glm::vec3& offset_m) {
 
 // Every effect of `scene` with its derived camera and parameters.
 std::map<render::Effect, image::Image> render_all(const gl_test::Environment& env, scene::Scene scene) {
-    render::place_mirror(scene, render::MirrorRequest{});
-    const auto index = render::find_camera(scene, std::nullopt);
-    REQUIRE_MESSAGE(index.ok(), index.error());
-    const auto cameras = render::make_cameras(scene, *index, kWidthPx, kHeightPx);
-    REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-    auto renderer = render::Renderer::create(*env.context, env.fn, scene);
-    REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-    render::RenderOptions o = render_test::options(kWidthPx, kHeightPx);
-    o.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, o.curved.shape);
+    const render_test::DerivedScene derived = render_test::derive_scene(env, scene, kWidthPx, kHeightPx);
     std::map<render::Effect, image::Image> pictures;
     for (render::Effect effect : render::kAllEffects) {
         INFO(render::to_string(effect));
-        auto picture = renderer->render(effect, *cameras, o);
+        auto picture = derived.renderer->render(effect, derived.cameras, derived.options);
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         pictures.emplace(effect, std::move(*picture));
     }

@@ -14,6 +14,8 @@
 #include <gl/offscreen_target.hpp>
 #include <image/png.hpp>
 #include <plan/mirror_geometry.hpp>
+#include <plan/mirror_placement.hpp>
+#include <plan/scene_fit.hpp>
 #include <render/scene_pass.hpp>
 #include <plan/camera.hpp>
 #include <render/renderer.hpp>
@@ -75,6 +77,29 @@ inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& 
         }
     }
     return nullptr;
+}
+
+// What frustum-demo render derives for a scene it has never seen: a mirror
+// placed when the scene has none (added to `scene`), the default camera, a
+// renderer on `env`, and options() at the given size with the curved
+// mirror's sagitta fitted to the mirror (docs/any-scene.md).
+struct DerivedScene {
+    render::Cameras cameras;
+    std::optional<render::Renderer> renderer;
+    render::RenderOptions options;
+};
+inline DerivedScene derive_scene(const gl_test::Environment& env, scene::Scene& scene, int width_px, int height_px) {
+    render::place_mirror(scene, render::MirrorRequest{});
+    REQUIRE(scene.mirror);
+    const auto index = render::find_camera(scene, std::nullopt);
+    REQUIRE_MESSAGE(index.ok(), index.error());
+    auto cameras = render::make_cameras(scene, *index, width_px, height_px);
+    REQUIRE_MESSAGE(cameras.ok(), cameras.error());
+    auto renderer = render::Renderer::create(*env.context, env.fn, scene);
+    REQUIRE_MESSAGE(renderer.ok(), renderer.error());
+    DerivedScene out{std::move(*cameras), std::move(*renderer), options(width_px, height_px)};
+    out.options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, out.options.curved.shape);
+    return out;
 }
 
 // <test binary's folder>/render_test_output (the build tree), created on demand.
