@@ -1,8 +1,8 @@
 #include "frustum/lens.hpp"
 
 #include "frustum/detail/errors.hpp"
-#include "frustum/detail/from_planes_points.hpp"
 #include "frustum/detail/lens_matrices.hpp"
+#include "frustum/detail/lens_tile_assembly.hpp"
 #include "frustum/detail/pair_factory.hpp"
 #include "frustum/detail/tile_grid_writer.hpp"
 #include "frustum/from_planes.hpp"
@@ -10,6 +10,7 @@
 #include "frustum/queries.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace frustum {
 
@@ -26,37 +27,19 @@ Vec2<T> lens_warp(const Vec2<T>& point_m, const Lens<T>& lens) {
 
 namespace {
 
-// The plane through the eye (the origin, lens_grid works relative to it)
-// and two points, unit normal (a tile faces it inward with facing()).
-template <class T>
-Plane<T> edge_plane(const Vec3<T>& a, const Vec3<T>& b) {
-    return Plane<T>::at(glm::normalize(glm::cross(a, b)), Vec3<T>(T(0)));
-}
-
-// World to eye-relative coordinates, T(-eye): a tile built relative to the
-// eye is compose(tile, world_to_eye(eye)), i.e. M T(-eye) and T(eye) M^-1
-// (analytic).
-template <class T>
-RigidTransform<T> world_to_eye(const Vec3<T>& eye) {
-    return RigidTransform<T>::from_rotation_translation(Mat3<T>(T(1)), -eye);
-}
-
-// The planes and far points of every tile, built once per grid line and
-// corner and handed to `finish(index, column, row, sides, far_points,
-// to_eye)` tile by tile. Shared corners and edge planes are the same
-// expressions a tile on its own would evaluate (lens_warp of the same
-// pixel, the same cross product and normalization; facing() per tile), so
-// the bits are those of building each tile alone. `out` gets the
-// crop_tiles() layout.
-//
-// Everything is relative to the eye (the eye at the origin: side planes
-// through it have d = 0); `finish` moves the tile back to the world with
-// to_eye = world_to_eye(eye). Built in world coordinates, a camera 5 km
-// from the origin gave side rows whose w parts are 5000 times their
-// normals, and from_planes refused them as dependent.
-template <class T, class Finish>
+// Every tile of the grid, handed to `finish(index, column, row, input,
+// shared)` (false: the tile is degenerate) after what neighbouring tiles
+// share is built once per grid line and corner: each warped corner (eq. 34,
+// a pow), its in-plane coordinates, and each edge as a 3D vector from the
+// in-plane differences (detail/lens_tile_assembly.hpp builds the tile from
+// them). `out` gets the crop_tiles() layout. Everything is relative to the
+// eye; the tiles are moved back to the world by detail::lens_tile_store_*
+// (built in world coordinates, a camera 5 km from the origin gave side
+// planes whose w parts are 5000 times their normals).
+template <bool with_normals, class T, class Finish>
 Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
                  int rows, TileGrid<T>& out, Finish&& finish) {
+    using detail::V4;
     if (!(lens.radius_m > T(0)) || !(lens.power > T(0)) || !std::isfinite(lens.radius_m) ||
         !std::isfinite(lens.power) || !std::isfinite(lens.center_m.x) || !std::isfinite(lens.center_m.y)) {
         detail::TileGridWriter::clear(out);
@@ -64,8 +47,9 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
                                 {{"center_x", lens.center_m.x}, {"center_y", lens.center_m.y},
                                  {"radius", lens.radius_m}, {"power", lens.power}});
     }
-    if (Status layout = crop_tiles(camera, width_px, height_px, columns, rows, out); !layout) {
-        return layout;
+    if (!(width_px >= 1 && height_px >= 1 && columns >= 1 && rows >= 1 && columns <= width_px &&
+          rows <= height_px)) {
+        return crop_tiles(camera, width_px, height_px, columns, rows, out); // its refusal and text
     }
     const auto failed = [&out](Error error) {
         detail::TileGridWriter::clear(out);
@@ -75,76 +59,134 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
     if (!frame) {
         return failed(frame.take_error_in("frustum::lens_tiles()"));
     }
-    const auto camera_planes = planes(camera);
+    // How much farther the far plane is than the near plane, seen from the
+    // eye: |F(eye)| / |F.xyz| over |N(eye)| / |N.xyz| (raw planes, no
+    // normalization of the other four).
+    const auto camera_planes = raw_planes(camera);
     if (!camera_planes.far) {
         return failed(detail::error_text("lens_tiles", "needs a finite far plane", ""));
     }
-    // How much farther the far plane is than the near plane, seen from the eye.
-    const T far_ratio = std::abs(camera_planes.far->distance(frame->eye)) /
-                        std::abs(camera_planes.near.distance(frame->eye));
-    // The near-plane frame and near plane relative to the eye (far from the
-    // origin center - eye loses nothing: nearby floats subtract exactly).
-    NearPlaneFrame<T> relative = *frame;
-    relative.center = frame->center - frame->eye;
-    relative.eye = Vec3<T>(T(0));
-    const RigidTransform<T> to_eye = world_to_eye(frame->eye);
-    const Plane<T> near_plane = Plane<T>::at(camera_planes.near.normal(), relative.center);
+    const T far_ratio = (std::abs(camera_planes.far->distance(frame->eye)) * glm::length(camera_planes.near.normal())) /
+                        (std::abs(camera_planes.near.distance(frame->eye)) * glm::length(camera_planes.far->normal()));
+    // The near-plane centre relative to the eye (far from the origin
+    // center - eye loses nothing: nearby floats subtract exactly), and the
+    // refraction plane as the plane of the frame's axes through it: the
+    // corners center + u x_axis + v y_axis lie on it to rounding, so the
+    // depth row beta N vanishes on the inverse's columns c0, c1 as it must
+    // (the camera's own near plane is tilted against the frame by its
+    // rounding, 1e-6 in float: |M M^-1 - I| of 4e-6 in row 2).
+    const Vec3<T> center = frame->center - frame->eye;
+    Vec3<T> normal = glm::normalize(glm::cross(frame->x_axis, frame->y_axis));
+    if (glm::dot(normal, center) < T(0)) {
+        normal = -normal; // inward: away from the eye
+    }
+    const T near_m = glm::dot(normal, center);
+    const T span = clip_z_span<T>(camera.depth());
+    // beta = (z_f - z_n) r / (r - 1) (lens_tile_assembly.hpp); r - 1 must be
+    // clearly positive (from_planes refuses far points closer than
+    // sqrt(epsilon) of their depth to the near plane).
+    if (!((far_ratio - T(1)) > std::sqrt(std::numeric_limits<T>::epsilon()) * far_ratio) ||
+        !std::isfinite(far_ratio)) {
+        return failed(detail::error<T>("lens_tiles", "needs a far plane clearly beyond the near plane",
+                                       {{"far_over_near", far_ratio}}));
+    }
+    const T beta = span * far_ratio / (far_ratio - T(1));
+    detail::LensTileShared<T> shared;
+    shared.eye = detail::load(Vec4<T>(frame->eye, T(0)));
+    shared.z_near = clip_z_near<T>(camera.depth());
+    shared.inv_near_m = T(1) / near_m;
+    shared.lambda = T(-1) / (beta * near_m);
+    shared.far_row = beta * detail::load(Vec4<T>(normal, -near_m));
+    shared.orientation = near_m / glm::dot(center, glm::cross(frame->x_axis, frame->y_axis));
+    detail::TileGridWriter::layout(out, width_px, height_px, columns, rows,
+                                   detail::PairFactory::traits(detail::PairFactory::keep_sign(
+                                       Mat4<T>(T(1)), Mat4<T>(T(1)), camera.depth(), false)));
 
-    // A moved point of the refraction plane for the pixel position (x, y).
-    const auto moved = [&](int x_px, int y_px) {
-        const Vec2<T> ndc(T(-1) + T(2) * T(x_px) / T(width_px), T(-1) + T(2) * T(y_px) / T(height_px));
-        const Vec2<T> plane_m(ndc.x * frame->half_width_m, ndc.y * frame->half_height_m);
-        return relative.point(lens_warp(plane_m, lens));
-    };
-    const auto far_point = [&](const Vec3<T>& corner) { return corner * far_ratio; };
+    // eq. 34 as X' = C + v r^(p - 1), r^(p - 1) = (|v|^2 / R^2)^((p - 1) / 2):
+    // lens_warp's point without its square root and division.
+    const T inv_radius2 = T(1) / (lens.radius_m * lens.radius_m);
+    const T exponent = (lens.power - T(1)) / T(2);
+    const Vec2<T> half(frame->half_width_m, frame->half_height_m);
     const std::size_t n = static_cast<std::size_t>(columns) + 1;
-    // Corners, far points and the planes along the bottom edges of the row
-    // of tiles being built (index r) and of the one above (r + 1).
-    std::vector<Vec3<T>> corners(2 * n), far_points(2 * n);
-    std::vector<Plane<T>> horizontal(2 * n), vertical(n);
-    const auto corner_row = [&](int r, std::size_t half) {
+    // Scratch kept with the grid: corners (X, 1) and in-plane (u, v) of the
+    // bottom and top lines of the row of tiles being built, the edges along
+    // those two lines and the vertical edges of the row, the columns' x on
+    // the near plane before eq. 34; with_normals: the edges' planes through
+    // the eye too (X_from x X_to = X_from x edge).
+    Vec4<T>* scratch = detail::TileGridWriter::scratch(out, (with_normals ? 11 : 8) * n);
+    Vec4<T>* corners = scratch;
+    Vec4<T>* plane = scratch + 2 * n;
+    Vec4<T>* horizontal = scratch + 4 * n;
+    Vec4<T>* vertical = scratch + 6 * n;
+    Vec4<T>* column_x = scratch + 7 * n;
+    Vec4<T>* horizontal_normal = scratch + 8 * n;
+    Vec4<T>* vertical_normal = scratch + 10 * n;
+    for (int c = 0; c <= columns; ++c) {
+        column_x[c].x = (T(-1) + T(2) * T(out.x_px(c)) / T(width_px)) * half.x;
+    }
+    const auto normal_of = [](const Vec4<T>& from, const Vec4<T>& along) {
+        return Vec4<T>(glm::cross(Vec3<T>(from), Vec3<T>(along)), T(0));
+    };
+    const detail::V4<T> x_axis = detail::load(Vec4<T>(frame->x_axis, T(0)));
+    const detail::V4<T> y_axis = detail::load(Vec4<T>(frame->y_axis, T(0)));
+    const detail::V4<T> center_w = detail::load(Vec4<T>(center, T(1)));
+    const auto corner_line = [&](int r, std::size_t half_index) {
+        const T y_m = (T(-1) + T(2) * T(out.y_px(r)) / T(height_px)) * half.y - lens.center_m.y;
         for (int c = 0; c <= columns; ++c) {
-            const std::size_t k = half * n + static_cast<std::size_t>(c);
-            corners[k] = moved(out.x_px(c), out.y_px(r));
-            far_points[k] = far_point(corners[k]);
-            if (c > 0) { // the plane through this corner and the one to its left
-                horizontal[k - 1] = edge_plane(corners[k - 1], corners[k]);
+            const std::size_t k = half_index * n + static_cast<std::size_t>(c);
+            const T v_x = column_x[c].x - lens.center_m.x;
+            const T length2 = v_x * v_x + y_m * y_m;
+            const T factor = length2 == T(0) ? T(0) : std::pow(length2 * inv_radius2, exponent);
+            const T u = lens.center_m.x + factor * v_x, w = lens.center_m.y + factor * y_m;
+            plane[k] = Vec4<T>(u, w, T(0), T(0));
+            corners[k] = detail::store<T>(center_w + x_axis * u + y_axis * w);
+            if (c > 0) { // X_this - X_left
+                horizontal[k - 1] = detail::store<T>(x_axis * (u - plane[k - 1].x) + y_axis * (w - plane[k - 1].y));
+                if constexpr (with_normals) {
+                    horizontal_normal[k - 1] = normal_of(corners[k - 1], horizontal[k - 1]);
+                }
             }
         }
     };
-    corner_row(0, 0);
+    corner_line(0, 0);
     for (int r = 0; r < rows; ++r) {
-        const std::size_t lo = static_cast<std::size_t>(r % 2) * n, hi = n - lo; // bottom, top halves
-        corner_row(r + 1, hi / n);
-        for (std::size_t c = 0; c < n; ++c) {
-            vertical[c] = edge_plane(corners[lo + c], corners[hi + c]);
+        const std::size_t lo = static_cast<std::size_t>(r % 2) * n, hi = n - lo; // bottom, top lines
+        corner_line(r + 1, hi / n);
+        for (std::size_t c = 0; c < n; ++c) { // X_top - X_bottom
+            vertical[c] = detail::store<T>(x_axis * (plane[hi + c].x - plane[lo + c].x) +
+                                           y_axis * (plane[hi + c].y - plane[lo + c].y));
+            if constexpr (with_normals) {
+                vertical_normal[c] = normal_of(corners[lo + c], vertical[c]);
+            }
         }
         for (int c = 0; c < columns; ++c) {
             const std::size_t k = static_cast<std::size_t>(c);
-            const Vec3<T>& bottom_left = corners[lo + k];
-            const Vec3<T>& bottom_right = corners[lo + k + 1];
-            const Vec3<T>& top_right = corners[hi + k + 1];
-            const Vec3<T>& top_left = corners[hi + k];
-            const Vec3<T> inside = (bottom_left + bottom_right + top_right + top_left) / T(4);
-            const SidePlanes<T> sides{vertical[k].facing(inside), vertical[k + 1].facing(inside),
-                                      horizontal[lo + k].facing(inside), horizontal[hi + k].facing(inside),
-                                      near_plane};
-            // The far plane keeps each moved corner's ray inside up to the
-            // camera's far distance (one far point would tilt it into the tile).
-            const Vec3<T> tile_far[4] = {far_points[lo + k], far_points[lo + k + 1], far_points[hi + k + 1],
-                                         far_points[hi + k]};
-            if (Status status = finish(out.index(c, r), c, r, sides, tile_far, to_eye); !status) {
-                return failed(status.take_error());
+            const std::size_t at[4] = {lo + k, lo + k + 1, hi + k + 1, hi + k}; // bl, br, tr, tl
+            detail::LensTileInput<T> in;
+            for (int i = 0; i < 4; ++i) {
+                in.corners[i] = detail::load(corners[at[i]]);
+                in.u[i] = plane[at[i]].x;
+                in.v[i] = plane[at[i]].y;
+            }
+            in.bottom = detail::load(horizontal[lo + k]);
+            in.top = detail::load(horizontal[hi + k]);
+            in.left = detail::load(vertical[k]);
+            in.right = detail::load(vertical[k + 1]);
+            if constexpr (with_normals) {
+                in.normals[0] = detail::load(vertical_normal[k]);     // X_0 x X_3
+                in.normals[1] = detail::load(vertical_normal[k + 1]); // X_1 x X_2
+                in.normals[2] = detail::load(horizontal_normal[lo + k]); // X_0 x X_1
+                in.normals[3] = detail::load(horizontal_normal[hi + k]); // X_3 x X_2
+            }
+            if (!finish(out.index(c, r), in, shared)) {
+                return failed(detail::error_text(
+                    "lens_tiles", "a tile's lens frustum is degenerate",
+                    "tile (" + detail::number(c) + ", " + detail::number(r) +
+                        "): its moved corners are not a convex quad of one orientation"));
             }
         }
     }
     return {};
-}
-
-// A tile's lens frustum failed: the error names the tile.
-Error tile_error(int column, int row, const std::string& error) {
-    return detail::error_text("lens_tiles", "a tile's lens frustum is degenerate",
-                              "tile (" + detail::number(column) + ", " + detail::number(row) + "): " + error);
 }
 
 } // namespace
@@ -153,18 +195,24 @@ template <class T>
 Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px, int columns,
                   int rows, TileGrid<T>& out) {
     using detail::TileGridWriter;
-    return lens_grid(camera, lens, width_px, height_px, columns, rows, out,
-                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
-                         const RigidTransform<T>& to_eye) -> Status {
-                         auto relative = detail::from_planes_points(sides, far, 4, camera.depth());
-                         if (!relative) {
-                             return tile_error(c, r, relative.error());
+    Mat4<T>* matrices = nullptr;
+    Mat4<T>* inverses = nullptr;
+    return lens_grid<false>(camera, lens, width_px, height_px, columns, rows, out,
+                     [&](std::size_t i, const detail::LensTileInput<T>& in,
+                         const detail::LensTileShared<T>& shared) FRUSTUM_LENS_INLINE {
+                         detail::V4<T> columns_relative[4];
+                         detail::Cols<T> rows_relative;
+                         if (!detail::lens_tile_inverse(in, shared, columns_relative) ||
+                             !detail::lens_tile_rows(columns_relative, shared, rows_relative)) {
+                             return false;
                          }
-                         const MatrixPair<T> pair = compose(*relative, to_eye);
-                         TileGridWriter::matrices(out)[i] = pair.matrix();
-                         TileGridWriter::inverses(out)[i] = pair.inverse();
-                         TileGridWriter::set_traits(out, detail::PairFactory::traits(pair));
-                         return {};
+                         if (matrices == nullptr) {
+                             matrices = TileGridWriter::matrices(out);
+                             inverses = TileGridWriter::inverses(out);
+                         }
+                         detail::lens_tile_store_matrix(rows_relative, shared, matrices[i]);
+                         detail::lens_tile_store_inverse(columns_relative, shared, inverses[i]);
+                         return true;
                      });
 }
 
@@ -180,19 +228,21 @@ Result<std::vector<Tile<T>>> lens_tiles(const MatrixPair<T>& camera, const Lens<
 
 namespace detail {
 
+// The baseline's matrix: the same tile's M assembled from its edge planes
+// alone (lens_tile_rows_from_planes), the cheapest forward form, for "build
+// the matrix, then invert it".
 template <class T>
 Status lens_tile_matrices(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px, int height_px,
                           int columns, int rows, TileGrid<T>& layout, std::vector<Mat4<T>>& matrices) {
     matrices.resize(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
-    return lens_grid(camera, lens, width_px, height_px, columns, rows, layout,
-                     [&](std::size_t i, int c, int r, const SidePlanes<T>& sides, const Vec3<T>* far,
-                         const RigidTransform<T>& to_eye) -> Status {
-                         auto m = from_planes_matrix(sides, far, 4, camera.depth());
-                         if (!m) {
-                             return tile_error(c, r, m.error());
+    return lens_grid<true>(camera, lens, width_px, height_px, columns, rows, layout,
+                     [&](std::size_t i, const LensTileInput<T>& in, const LensTileShared<T>& shared) FRUSTUM_LENS_INLINE {
+                         Cols<T> rows_relative;
+                         if (!lens_tile_rows_from_planes(in, shared, rows_relative)) {
+                             return false;
                          }
-                         matrices[i] = *m * to_eye.matrix;
-                         return {};
+                         lens_tile_store_matrix(rows_relative, shared, matrices[i]);
+                         return true;
                      });
 }
 
