@@ -164,19 +164,18 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
             const std::size_t at[4] = {lo + k, lo + k + 1, hi + k + 1, hi + k}; // bl, br, tr, tl
             detail::LensTileInput<T> in;
             for (int i = 0; i < 4; ++i) {
-                in.corners[i] = detail::load(corners[at[i]]);
-                in.u[i] = plane[at[i]].x;
-                in.v[i] = plane[at[i]].y;
+                in.corners[i] = corners + at[i];
+                in.plane[i] = plane + at[i];
             }
-            in.bottom = detail::load(horizontal[lo + k]);
-            in.top = detail::load(horizontal[hi + k]);
-            in.left = detail::load(vertical[k]);
-            in.right = detail::load(vertical[k + 1]);
+            in.bottom = horizontal + lo + k;
+            in.top = horizontal + hi + k;
+            in.left = vertical + k;
+            in.right = vertical + k + 1;
             if constexpr (with_normals) {
-                in.normals[0] = detail::load(vertical_normal[k]);     // X_0 x X_3
-                in.normals[1] = detail::load(vertical_normal[k + 1]); // X_1 x X_2
-                in.normals[2] = detail::load(horizontal_normal[lo + k]); // X_0 x X_1
-                in.normals[3] = detail::load(horizontal_normal[hi + k]); // X_3 x X_2
+                in.normals[0] = vertical_normal + k;          // X_0 x X_3
+                in.normals[1] = vertical_normal + k + 1;      // X_1 x X_2
+                in.normals[2] = horizontal_normal + lo + k;   // X_0 x X_1
+                in.normals[3] = horizontal_normal + hi + k;   // X_3 x X_2
             }
             if (!finish(out.index(c, r), in, shared)) {
                 return failed(detail::error_text(

@@ -130,12 +130,12 @@ Result<T> far_distance(const MatrixPair<T>& pair) {
 
 template <class T>
 Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
-    const auto eye = eye_point(camera);
-    if (!eye) {
+    const KeyPoints<T> k = key_points(camera); // once: eye_point() would compute them again
+    const T tolerance = infinity_tolerance<T>();
+    const Vec4<T> eye = to_point(k.eye, tolerance); // eye_point()
+    if (eye.w != T(1)) {
         return detail::error_text("near_plane_frame", "needs a perspective camera (finite eye)", "");
     }
-    const KeyPoints<T> k = key_points(camera);
-    const T tolerance = infinity_tolerance<T>();
     Vec3<T> c[4];
     for (int i = 0; i < 4; ++i) {
         const Vec4<T> p = to_point(k.corners[i], tolerance);
@@ -152,7 +152,7 @@ Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
     frame.half_height_m = glm::length(half_y);
     frame.x_axis = half_x / frame.half_width_m;
     frame.y_axis = half_y / frame.half_height_m;
-    frame.eye = *eye;
+    frame.eye = Vec3<T>(eye);
     return frame;
 }
 

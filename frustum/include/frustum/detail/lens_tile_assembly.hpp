@@ -70,16 +70,20 @@ struct LensTileShared {
     T orientation = 0; // d_n / (center . (x_axis x y_axis)): det(X_a, X_b, X_c) = A d_n / orientation
 };
 
-// A tile's corners (eye-relative, w = 1), their in-plane coordinates and its
-// edges (w = 0).
+// Where a tile's shared parts are: its corners (X, 1) (eye-relative), their
+// in-plane coordinates (u, v, 0, 0) and its edges (w = 0), in the grid's
+// scratch arrays (read in place, not copied per tile).
 template <class T>
 struct LensTileInput {
-    V4<T> corners[4];
-    T u[4], v[4];
-    V4<T> bottom, top, left, right; // X_1 - X_0, X_2 - X_3, X_3 - X_0, X_2 - X_1
+    const Vec4<T>* corners[4]; // X_0..X_3
+    const Vec4<T>* plane[4];   // (u_i, v_i, 0, 0)
+    const Vec4<T>* bottom;     // X_1 - X_0
+    const Vec4<T>* top;        // X_2 - X_3
+    const Vec4<T>* left;       // X_3 - X_0
+    const Vec4<T>* right;      // X_2 - X_1
     // For lens_tile_rows_from_planes only: the edges' planes through the eye,
     // X_0 x X_3, X_1 x X_2, X_0 x X_1, X_3 x X_2 (left, right, bottom, top).
-    V4<T> normals[4];
+    const Vec4<T>* normals[4];
 };
 
 template <class T>
@@ -104,8 +108,8 @@ FRUSTUM_LENS_INLINE inline V4<T> times(const V4<T>& v, T s) {
 // of one sign, none below 1e-6 of the largest; NaN fails too).
 template <class T>
 FRUSTUM_LENS_INLINE inline bool lens_tile_inverse(const LensTileInput<T>& in, const LensTileShared<T>& shared, V4<T>* c) {
-    const T* u = in.u;
-    const T* v = in.v;
+    const T u[4] = {in.plane[0]->x, in.plane[1]->x, in.plane[2]->x, in.plane[3]->x};
+    const T v[4] = {in.plane[0]->y, in.plane[1]->y, in.plane[2]->y, in.plane[3]->y};
     const T b_u = u[1] - u[0], b_v = v[1] - v[0]; // bottom edge
     const T l_u = u[3] - u[0], l_v = v[3] - v[0]; // left edge
     const T d_u = u[2] - u[0], d_v = v[2] - v[0]; // diagonal 0 -> 2
@@ -127,10 +131,12 @@ FRUSTUM_LENS_INLINE inline bool lens_tile_inverse(const LensTileInput<T>& in, co
     const T across = (b_v * t_u - b_u * t_v) * scale; // mu_1 - mu_0 = mu_2 - mu_3: cross(bottom, -top)
     const T up = (l_u * r_v - l_v * r_u) * scale;     // mu_3 - mu_0 = mu_2 - mu_1: cross(left, right)
     const T mu[4] = {a0 * scale, a1 * scale, a2 * scale, a3 * scale};
-    const V4<T>* x = in.corners;
+    const V4<T> x[4] = {load(*in.corners[0]), load(*in.corners[1]), load(*in.corners[2]), load(*in.corners[3])};
     const V4<T> quarter = splat(T(0.25));
-    c[0] = ((times<T>(in.bottom, mu[1]) + times<T>(in.top, mu[2])) + times<T>(x[0] + x[3], across)) * quarter;
-    c[1] = ((times<T>(in.left, mu[3]) + times<T>(in.right, mu[2])) + times<T>(x[0] + x[1], up)) * quarter;
+    c[0] = ((times<T>(load(*in.bottom), mu[1]) + times<T>(load(*in.top), mu[2])) + times<T>(x[0] + x[3], across)) *
+           quarter;
+    c[1] = ((times<T>(load(*in.left), mu[3]) + times<T>(load(*in.right), mu[2])) + times<T>(x[0] + x[1], up)) *
+           quarter;
     c[2] = V4<T>{T(0), T(0), T(0), shared.lambda};
     c[3] = ((times<T>(x[0], mu[0]) + times<T>(x[1], mu[1])) + (times<T>(x[2], mu[2]) + times<T>(x[3], mu[3]))) * quarter -
            V4<T>{T(0), T(0), T(0), shared.z_near * shared.lambda};
@@ -168,8 +174,8 @@ FRUSTUM_LENS_INLINE inline bool lens_tile_rows(const V4<T>* c, const LensTileSha
 // -normals[3]. False for a degenerate tile, as lens_tile_inverse.
 template <class T>
 FRUSTUM_LENS_INLINE inline bool lens_tile_rows_from_planes(const LensTileInput<T>& in, const LensTileShared<T>& shared, Cols<T>& rows) {
-    const T* u = in.u;
-    const T* v = in.v;
+    const T u[4] = {in.plane[0]->x, in.plane[1]->x, in.plane[2]->x, in.plane[3]->x};
+    const T v[4] = {in.plane[0]->y, in.plane[1]->y, in.plane[2]->y, in.plane[3]->y};
     const T b_u = u[1] - u[0], b_v = v[1] - v[0], l_u = u[3] - u[0], l_v = v[3] - v[0];
     const T d_u = u[2] - u[0], d_v = v[2] - v[0], r_u = u[2] - u[1], r_v = v[2] - v[1];
     const T e_u = u[3] - u[1], e_v = v[3] - v[1];
@@ -186,8 +192,8 @@ FRUSTUM_LENS_INLINE inline bool lens_tile_rows_from_planes(const LensTileInput<T
     const V4<T> factors =
         V4<T>{-numerator, numerator, numerator, -numerator} /
         (V4<T>{a[1], a[0], a[2], a[0]} * V4<T>{a[2], a[3], a[3], a[1]});
-    const V4<T> l = times<T>(in.normals[0], factors[0]), r = times<T>(in.normals[1], factors[1]);
-    const V4<T> b = times<T>(in.normals[2], factors[2]), t = times<T>(in.normals[3], factors[3]);
+    const V4<T> l = times<T>(load(*in.normals[0]), factors[0]), r = times<T>(load(*in.normals[1]), factors[1]);
+    const V4<T> b = times<T>(load(*in.normals[2]), factors[2]), t = times<T>(load(*in.normals[3]), factors[3]);
     rows.c[0] = l - r;
     rows.c[1] = b - t;
     rows.c[3] = ((l + r) + (b + t)) * T(0.5);
