@@ -3,6 +3,7 @@
 #pragma once
 
 #include "image_printer.hpp"
+#include "../skips.hpp"
 
 #include <doctest/doctest.h>
 
@@ -28,18 +29,51 @@ struct Environment {
     gl::Functions fn;
 };
 
-// Null (after a MESSAGE saying why) when the backend cannot make a context,
-// so the caller returns and the test is skipped rather than failed.
-inline std::unique_ptr<Environment> make_environment(gl::Backend backend,
-                                                     const gl::ContextOptions& options = {}) {
+// Null, with the backend's error in `why`, when the backend cannot make a context.
+inline std::unique_ptr<Environment> try_environment(gl::Backend backend, std::string& why,
+                                                    const gl::ContextOptions& options = {}) {
     auto context = gl::create_offscreen_context(backend, options);
     if (!context) {
-        MESSAGE("skipping " << gl::to_string(backend) << ": " << context.error());
+        why = std::string(gl::to_string(backend)) + ": " + context.error();
         return nullptr;
     }
     auto fn = gl::Functions::load(**context);
     REQUIRE_MESSAGE(fn.ok(), fn.error());
     return std::unique_ptr<Environment>(new Environment{std::move(*context), *fn});
+}
+
+// Null, after recording a skip (tests/skips.hpp), when the backend cannot
+// make a context: the caller returns (or goes on to the next backend), and
+// the suite reports a skip, not a pass.
+inline std::unique_ptr<Environment> make_environment(gl::Backend backend,
+                                                     const gl::ContextOptions& options = {}) {
+    std::string why;
+    auto env = try_environment(backend, why, options);
+    if (!env) {
+        test_skips::skip(why);
+    }
+    return env;
+}
+
+// EGL, else OSMesa; null (after recording a skip with both errors) when neither works.
+inline std::unique_ptr<Environment> make_any_environment(const gl::ContextOptions& options = {}) {
+    std::string why_not;
+    for (gl::Backend backend : kBackends) {
+        std::string why;
+        if (auto env = try_environment(backend, why, options)) {
+            return env;
+        }
+        why_not += (why_not.empty() ? "" : "; ") + why;
+    }
+    test_skips::skip(why_not);
+    return nullptr;
+}
+
+// The ES 3.0 rerun that removes GL_EXT_clip_control (tests/app_tests.cmake):
+// there a context without clip control is what was asked for, not a skip.
+inline bool clip_control_removed_on_purpose() {
+    const char* expect = std::getenv("FRUSTUM_EXPECT_GLES");
+    return expect != nullptr && std::string(expect) == "3.0-no-clip-control";
 }
 
 inline bool near(const image::Rgba& a, const image::Rgba& b, int tolerance) {

@@ -85,8 +85,11 @@ TEST_CASE("MSAA: 4 samples by default where the context has them; a count it can
 
 TEST_CASE("MSAA: silhouettes get intermediate values, flat areas stay as they are") {
     auto r = render_test::make_any_renderer();
-    if (!r || gl::max_samples(r->env->fn) < 4) {
-        MESSAGE("skipped: no 4x MSAA");
+    if (!r) {
+        return; // skipped (make_any_renderer says why)
+    }
+    if (gl::max_samples(r->env->fn) < 4) {
+        test_skips::skip("no 4x MSAA");
         return;
     }
     const auto cameras = render_test::showcase_cameras();
@@ -110,8 +113,11 @@ TEST_CASE("MSAA: silhouettes get intermediate values, flat areas stay as they ar
 
 TEST_CASE("MSAA: the reflection texture is anti-aliased too") {
     auto r = render_test::make_any_renderer();
-    if (!r || gl::max_samples(r->env->fn) < 4) {
-        MESSAGE("skipped: no 4x MSAA");
+    if (!r) {
+        return; // skipped (make_any_renderer says why)
+    }
+    if (gl::max_samples(r->env->fn) < 4) {
+        test_skips::skip("no 4x MSAA");
         return;
     }
     const auto cameras = render_test::showcase_cameras();
@@ -143,8 +149,11 @@ TEST_CASE("MSAA: the reflection texture is anti-aliased too") {
 
 TEST_CASE("MSAA: stitched tiles stay close to the full frame") {
     auto r = render_test::make_any_renderer();
-    if (!r || gl::max_samples(r->env->fn) < 4) {
-        MESSAGE("skipped: no 4x MSAA");
+    if (!r) {
+        return; // skipped (make_any_renderer says why)
+    }
+    if (gl::max_samples(r->env->fn) < 4) {
+        test_skips::skip("no 4x MSAA");
         return;
     }
     const auto cameras = render_test::showcase_cameras();

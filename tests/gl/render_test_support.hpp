@@ -56,11 +56,8 @@ struct RenderEnvironment {
 };
 
 // Null (after a MESSAGE) when `backend` cannot make a context.
-inline std::unique_ptr<RenderEnvironment> make_renderer(gl::Backend backend, const scene::Scene& scene = showcase()) {
-    auto env = gl_test::make_environment(backend);
-    if (!env) {
-        return nullptr;
-    }
+inline std::unique_ptr<RenderEnvironment> renderer_on(std::unique_ptr<gl_test::Environment> env,
+                                                      const scene::Scene& scene) {
     auto out = std::make_unique<RenderEnvironment>();
     out->env = std::move(env);
     auto renderer = render::Renderer::create(*out->env->context, out->env->fn, scene);
@@ -69,14 +66,16 @@ inline std::unique_ptr<RenderEnvironment> make_renderer(gl::Backend backend, con
     return out;
 }
 
-// EGL, else OSMesa; null (after MESSAGEs) when neither works.
+// Null (after recording a skip) when the backend cannot make a context.
+inline std::unique_ptr<RenderEnvironment> make_renderer(gl::Backend backend, const scene::Scene& scene = showcase()) {
+    auto env = gl_test::make_environment(backend);
+    return env ? renderer_on(std::move(env), scene) : nullptr;
+}
+
+// EGL, else OSMesa; null (after recording a skip with both errors) when neither works.
 inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& scene = showcase()) {
-    for (gl::Backend backend : gl_test::kBackends) {
-        if (auto env = make_renderer(backend, scene)) {
-            return env;
-        }
-    }
-    return nullptr;
+    auto env = gl_test::make_any_environment();
+    return env ? renderer_on(std::move(env), scene) : nullptr;
 }
 
 // What frustum-demo render derives for a scene it has never seen: a mirror
@@ -98,7 +97,7 @@ inline DerivedScene derive_scene(const gl_test::Environment& env, scene::Scene& 
     auto renderer = render::Renderer::create(*env.context, env.fn, scene);
     REQUIRE_MESSAGE(renderer.ok(), renderer.error());
     DerivedScene out{std::move(*cameras), std::move(*renderer), options(width_px, height_px)};
-    out.options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, out.options.curved.shape);
+    out.options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, out.options.curved.shape, scene.world_bounds);
     return out;
 }
 

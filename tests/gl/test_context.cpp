@@ -4,6 +4,7 @@
 #include <gl/clip_control.hpp>
 #include <gl/errors.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,13 +75,26 @@ TEST_CASE("each backend makes a context with the expected API, version and clip 
     }
 }
 
-TEST_CASE("the fallback factory makes some context") {
-    auto context = gl::create_offscreen_context_with_fallback({});
-    if (!context) {
-        MESSAGE("skipping: " << context.error());
-        return;
+TEST_CASE("the fallback factory makes an EGL context when it can, else OSMesa, else names both errors") {
+    std::string egl_error, osmesa_error;
+    const bool egl = gl_test::try_environment(gl::Backend::Egl, egl_error) != nullptr;
+    const bool osmesa = gl_test::try_environment(gl::Backend::OsMesa, osmesa_error) != nullptr;
+    std::optional<std::string> fallback_error;
+    auto context = gl::create_offscreen_context_with_fallback(
+        {}, [&](const std::string& error) { fallback_error = error; });
+    CHECK(context.ok() == (egl || osmesa));
+    CHECK(fallback_error.has_value() == !egl); // told why EGL was passed over exactly when it was
+    if (egl) {
+        REQUIRE(context.ok());
+        CHECK((*context)->backend() == gl::Backend::Egl);
+    } else if (osmesa) {
+        REQUIRE(context.ok());
+        CHECK((*context)->backend() == gl::Backend::OsMesa);
+    } else {
+        REQUIRE_FALSE(context.ok());
+        CHECK(context.error().find("egl: ") != std::string::npos);
+        CHECK(context.error().find("osmesa: ") != std::string::npos);
     }
-    MESSAGE("fallback chose " << gl::to_string((*context)->backend()));
 }
 
 TEST_CASE("an unsupported requested version is an error naming it") {

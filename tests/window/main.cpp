@@ -2,5 +2,4 @@
 // moves, controls and text layout (pure), render_into / move_mirror on an
 // offscreen context, and `frustum-demo window` itself under xvfb-run
 // (skipped with a message when xvfb-run is not installed).
-#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
-#include <doctest/doctest.h>
+#include "../skips_main.hpp" // doctest's main, and a skip exits 77 (CTest: skipped)

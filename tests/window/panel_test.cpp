@@ -9,6 +9,8 @@
 #include "process.hpp"
 #include "shots.hpp"
 
+#include "../skips.hpp"
+
 #include <doctest/doctest.h>
 
 #include <demo/scene_files.hpp>
@@ -42,14 +44,14 @@ struct ScriptShots {
 };
 
 // tests/window/<script> FRUSTUM_DEMO OUT_DIR args... under xvfb-run, which
-// must end with 0, and its four screenshots; empty (with a message) when
+// must end with 0, and its four screenshots; empty (after recording a skip) when
 // xvfb-run, xdotool or ImageMagick's import is missing.
 std::optional<ScriptShots> run_panel_script(const std::string& script, const TempDir& dir,
                                             const std::vector<std::string>& args = {}) {
     const std::string xvfb_run = window_test::find_on_path("xvfb-run");
     if (xvfb_run.empty() || window_test::find_on_path("xdotool").empty() ||
         window_test::find_on_path("import").empty()) {
-        MESSAGE("skipping: needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
+        test_skips::skip("needs xvfb-run, xdotool and ImageMagick's import (scripts/install-deps.sh --window)");
         return std::nullopt;
     }
     std::vector<std::string> all{"-a", "-s", "-screen 0 1024x768x24", "bash",

@@ -1,9 +1,10 @@
 // The showcase's renderer on an offscreen context, for the window suite's
-// in-process tests; null (with the backend's error as a skip message) when
+// in-process tests; null (after recording a skip with the backend's error) when
 // there is no such context.
 #pragma once
 
 #include "../plan/showcase.hpp"
+#include "../skips.hpp"
 
 #include <doctest/doctest.h>
 
@@ -27,7 +28,7 @@ struct Rig {
 inline std::unique_ptr<Rig> make_rig(std::optional<gl::Backend> backend = std::nullopt) {
     auto context = backend ? gl::create_offscreen_context(*backend, {}) : gl::create_offscreen_context_with_fallback({});
     if (!context) {
-        MESSAGE("skipping: " << context.error());
+        test_skips::skip(context.error());
         return nullptr;
     }
     auto rig = std::make_unique<Rig>();

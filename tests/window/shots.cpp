@@ -1,5 +1,7 @@
 #include "shots.hpp"
 
+#include "../skips.hpp"
+
 #include <doctest/doctest.h>
 
 #include <image/compare.hpp>
@@ -20,7 +22,7 @@ image::Image opaque(image::Image picture) {
 std::optional<Child> run_window_under_xvfb(const std::vector<std::string>& options) {
     static const std::string xvfb_run = find_on_path("xvfb-run");
     if (xvfb_run.empty()) {
-        MESSAGE("skipping: xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
+        test_skips::skip("xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
         return std::nullopt;
     }
     std::vector<std::string> args{"-a", "-s", "-screen 0 1024x768x24", kDemo, "window"};

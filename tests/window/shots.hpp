@@ -23,7 +23,7 @@ inline constexpr double kMaxFractionOver = 0.005;
 
 inline const std::string kDemo = FRUSTUM_DEMO_EXE;
 
-// `frustum-demo window options...` under xvfb-run; empty (with a message) when xvfb-run is missing.
+// `frustum-demo window options...` under xvfb-run; empty (after recording a skip) when xvfb-run is missing.
 std::optional<Child> run_window_under_xvfb(const std::vector<std::string>& options);
 
 image::Image read(const std::filesystem::path& path);

@@ -6,6 +6,8 @@
 // curved mirror and non-affine effects cannot be drawn.
 #include "process.hpp"
 
+#include "../skips.hpp"
+
 #include "../sample_files.hpp"
 
 #include <doctest/doctest.h>
@@ -67,7 +69,7 @@ TEST_SUITE("window") {
 TEST_CASE("every key on every sample leaves the window running until Esc") {
     const std::string xvfb_run = window_test::find_on_path("xvfb-run");
     if (xvfb_run.empty()) {
-        MESSAGE("skipping: xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
+        test_skips::skip("xvfb-run is not installed (scripts/install-deps.sh --window installs xvfb)");
         return;
     }
     const std::vector<std::string> keys = table_keys();
