@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <thread>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -114,8 +116,19 @@ Outcome run(const std::string& program, const Launch& launch) {
     if (pid == 0) exec_child(program, launch, in_path, out_path, err_path);
     int status = 0;
     rusage usage{};
-    while (::wait4(pid, &status, 0, &usage) < 0) {
-        REQUIRE(errno == EINTR);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(launch.timeout_s);
+    for (;;) {
+        const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+        REQUIRE((done >= 0 || errno == EINTR));
+        if (done == pid) break;
+        if (std::chrono::steady_clock::now() > deadline) {
+            ::kill(pid, SIGKILL);
+            while (::wait4(pid, &status, 0, &usage) < 0) REQUIRE(errno == EINTR);
+            std::string command = program;
+            for (const std::string& arg : launch.args) command += " " + arg;
+            FAIL("killed after the timeout of " << launch.timeout_s << " s: " << command);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     Outcome outcome;
     outcome.peak_rss_kb = usage.ru_maxrss;

@@ -52,6 +52,10 @@ struct Launch {
     bool ignore_sigxfsz = true;      // a write past the limit fails (EFBIG) instead of killing
     std::string cwd;                 // empty: the test's
     long address_space_limit_bytes = -1; // RLIMIT_AS for the child (as prlimit --as), -1: none
+    // Then the child is killed (SIGKILL) and the case fails. The longest
+    // measured is a 640x360 render of every effect, under 10 s on llvmpipe
+    // with 2 cores: 12 times that for a loaded machine or a sanitizer build.
+    int timeout_s = 120;
 };
 
 struct Outcome {
@@ -61,7 +65,7 @@ struct Outcome {
     long peak_rss_kb = 0; // the child's maximum resident set (wait4 rusage)
 };
 
-// Runs `program` and waits for it (no shell).
+// Runs `program` and waits for it (no shell), at most launch.timeout_s.
 Outcome run(const std::string& program, const Launch& launch);
 
 // `work` run in a forked child, so that a crash, a sanitizer abort or a hang

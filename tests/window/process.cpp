@@ -2,11 +2,14 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -44,7 +47,7 @@ std::vector<std::string> environment_with(const std::map<std::string, std::optio
 } // namespace
 
 Child run(const std::string& program, const std::vector<std::string>& args,
-          const std::map<std::string, std::optional<std::string>>& environment) {
+          const std::map<std::string, std::optional<std::string>>& environment, int timeout_s) {
     TempDir dir;
     const std::string out_path = (dir / "stdout").string();
     const std::string err_path = (dir / "stderr").string();
@@ -65,6 +68,7 @@ Child run(const std::string& program, const std::vector<std::string>& args,
     const pid_t pid = ::fork();
     REQUIRE(pid >= 0);
     if (pid == 0) { // the child: only async-signal-safe calls, then exec
+        ::setpgid(0, 0); // its own process group, so that a timeout kills what it started too
         const int in = ::open("/dev/null", O_RDONLY);
         const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
         const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
@@ -75,7 +79,25 @@ Child run(const std::string& program, const std::vector<std::string>& args,
         ::_exit(127);
     }
     int status = 0;
-    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_s);
+    for (;;) {
+        const pid_t done = ::waitpid(pid, &status, WNOHANG);
+        REQUIRE(done >= 0);
+        if (done == pid) {
+            break;
+        }
+        if (std::chrono::steady_clock::now() > deadline) {
+            ::kill(-pid, SIGKILL);
+            ::kill(pid, SIGKILL);
+            REQUIRE(::waitpid(pid, &status, 0) == pid);
+            std::string command = program;
+            for (const std::string& arg : args) {
+                command += " " + arg;
+            }
+            FAIL("killed after the timeout of " << timeout_s << " s: " << command << "\nstderr: " << slurp(err_path));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     Child child;
     child.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     child.out = slurp(out_path);

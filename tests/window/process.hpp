@@ -15,10 +15,19 @@ struct Child {
     std::string out, err;
 };
 
-// Runs `program` with `args` (no shell) and waits for it. `environment`:
-// a value sets the variable, nullopt removes it; the rest is inherited.
+// The longest a child may run: the longest measured, the key sweep under
+// xvfb-run (about 40 s alone on llvmpipe, 2 cores), times 7 for a loaded
+// machine. A hung child (an X server that never comes up, a window that
+// never closes) then fails its test instead of stalling the suite.
+inline constexpr int kChildTimeoutS = 300;
+
+// Runs `program` with `args` (no shell) and waits for it, at most
+// `timeout_s`: then its whole process group is killed (SIGKILL) and the
+// test fails with the command. `environment`: a value sets the variable,
+// nullopt removes it; the rest is inherited.
 Child run(const std::string& program, const std::vector<std::string>& args,
-          const std::map<std::string, std::optional<std::string>>& environment = {});
+          const std::map<std::string, std::optional<std::string>>& environment = {},
+          int timeout_s = kChildTimeoutS);
 
 // `name` found on PATH, else empty.
 std::string find_on_path(const std::string& name);
