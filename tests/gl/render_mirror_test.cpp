@@ -6,6 +6,25 @@
 #include <plan/mirror_geometry.hpp>
 #include <render/scene_pass.hpp>
 
+namespace {
+
+// The rectangle method against the mirrored scene (the oblique method
+// matches that exactly, so also against the oblique method): its texture is
+// laid out on the mirror, not on the screen, and resampled bilinearly, so
+// edges (the floor's checker squares, silhouettes) move by up to a pixel.
+// Measured at 256x144 (llvmpipe; EGL, OSMesa and the ES 3.0 reruns alike):
+// 174 of 1645 mirror pixels (10.6%) over 24 LSB, mean 5.04 LSB. Bounds:
+// 12% and mean 6 LSB (a seventh more pixels, one LSB more on average).
+constexpr int kRectangleToleranceLsb = 24;
+constexpr int kRectangleMaxOverPercent = 12;
+constexpr double kRectangleMaxMeanLsb = 6.0;
+
+bool rectangle_agrees(const render_test::MaskedDiff& d) {
+    return d.pixels_over * 100 <= d.compared * kRectangleMaxOverPercent && d.mean_abs <= kRectangleMaxMeanLsb;
+}
+
+} // namespace
+
 TEST_SUITE("gl") {
 
 TEST_CASE("the mirror shows the mirrored scene") {
@@ -23,14 +42,15 @@ TEST_CASE("the mirror shows the mirrored scene") {
     // The reflection texture's texels are the screen's pixels (same pixel
     // centres), so only clipping differs: the oblique near plane versus a
     // fragment discard at the same plane, and the depth buffer's resolution
-    // along the tilted depth axis. Tolerance 2 LSB; up to 1% of the mirror's
-    // pixels may differ more (edges where objects meet the floor).
-    // Measured: identical (max 0).
+    // along the tilted depth axis. Measured: identical (max 0) in every
+    // run. Tolerance 2 LSB, and at most 2 of the 1645 mirror pixels beyond
+    // it (where objects meet the floor, another rasterizer may round a
+    // depth the other way).
     const auto d = render_test::compare_masked(mirrored, reference, mask, 2);
     MESSAGE("mirror vs mirrored geometry: " << d.compared << " mirror pixels, " << d.pixels_over
                                             << " over 2 LSB, max " << d.max_abs);
-    CHECK(d.pixels_over <= d.compared / 100);
-    if (d.pixels_over > d.compared / 100) {
+    CHECK(d.pixels_over <= 2);
+    if (d.pixels_over > 2) {
         render_test::save_failure("mirror-vs-mirrored-geometry", mirrored, reference);
     }
 }
@@ -59,6 +79,28 @@ TEST_CASE("the marker behind the mirror never shows in it, unless the near plane
     CHECK(red > 50);
 }
 
+TEST_CASE("the exact mirror rectangle shows the mirrored scene") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    const auto cameras = render_test::showcase_cameras();
+    const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
+    auto o = render_test::options();
+    o.mirror_method = render::MirrorMethod::Rectangle;
+    const image::Image rectangle = r->render(render::Effect::Mirror, cameras, o);
+    const image::Image reference = render_test::render_mirrored_geometry(*r, cameras);
+    CHECK(render_test::count_not_sky(rectangle, mask) > render_test::count(mask) / 3);
+    const auto d = render_test::compare_masked(rectangle, reference, mask, kRectangleToleranceLsb);
+    MESSAGE("rectangle vs mirrored geometry: " << d.compared << " mirror pixels, " << d.pixels_over
+                                               << " over 24 LSB, max " << d.max_abs << ", mean " << d.mean_abs);
+    const bool agree = rectangle_agrees(d);
+    CHECK(agree);
+    if (!agree) {
+        render_test::save_failure("mirror-rectangle-vs-mirrored-geometry", rectangle, reference);
+    }
+}
+
 TEST_CASE("the oblique mirror and the exact mirror rectangle agree") {
     auto r = render_test::make_any_renderer();
     if (!r) {
@@ -70,16 +112,11 @@ TEST_CASE("the oblique mirror and the exact mirror rectangle agree") {
     const image::Image oblique = r->render(render::Effect::Mirror, cameras, o);
     o.mirror_method = render::MirrorMethod::Rectangle;
     const image::Image rectangle = r->render(render::Effect::Mirror, cameras, o);
-    // Same rays, different sampling: the rectangle's texture is laid out on
-    // the mirror, not on the screen, and is resampled bilinearly; edges
-    // (the floor's checker squares, silhouettes) move by up to a pixel.
-    // Tolerance 24 LSB, exceeded by at most 15% of the mirror pixels, and a
-    // mean difference of at most 8 LSB. Measured at 256x144: 11% (185 of
-    // 1645 pixels), mean 5.
-    const auto d = render_test::compare_masked(oblique, rectangle, mask, 24);
+    // Same rays, different sampling (see kRectangleToleranceLsb).
+    const auto d = render_test::compare_masked(oblique, rectangle, mask, kRectangleToleranceLsb);
     MESSAGE("oblique vs rectangle: " << d.compared << " mirror pixels, " << d.pixels_over << " over 24 LSB, max "
                                      << d.max_abs << ", mean " << d.mean_abs);
-    const bool agree = d.pixels_over <= d.compared * 15 / 100 && d.mean_abs <= 8.0;
+    const bool agree = rectangle_agrees(d);
     CHECK(agree);
     if (!agree) {
         render_test::save_failure("mirror-oblique-vs-rectangle", oblique, rectangle);

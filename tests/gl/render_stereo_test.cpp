@@ -40,6 +40,36 @@ glm::dvec3 reflected(const scene::MirrorRect& m, const glm::dvec3& p) {
     return p - 2.0 * glm::dot(p - mirror_centre(m), n) * n;
 }
 
+// The reference disparity, from the eye separation and the depth alone,
+// not from plan/stereo: eyes ipd_m apart through a shared screen at depth
+// convergence_m put a point at depth d (along the camera's forward axis)
+// ipd_m (1 - convergence_m / d) apart on that screen (similar triangles),
+// whose height 2 convergence_m tan(yfov / 2) spans height_px pixels. The
+// pose and yfov are the showcase camera's own (scene::Camera).
+struct DirectStereo {
+    glm::dvec3 eye, forward;
+    double tan_half_yfov = 0.0;
+    int height_px = 0;
+    double ipd_m = 0.0, convergence_m = 0.0;
+
+    double depth_m(const glm::dvec3& p) const { return glm::dot(p - eye, forward); }
+    double disparity_px(const glm::dvec3& p) const {
+        const double screen_height_m = 2.0 * convergence_m * tan_half_yfov;
+        return ipd_m * (1.0 - convergence_m / depth_m(p)) * height_px / screen_height_m;
+    }
+};
+
+DirectStereo direct_stereo(const render::StereoRig& rig, int height_px) {
+    const auto index = render::find_camera(render_test::showcase(), std::nullopt);
+    REQUIRE_MESSAGE(index.ok(), index.error());
+    const scene::Camera& camera = render_test::showcase().cameras[static_cast<std::size_t>(*index)];
+    REQUIRE(camera.kind == scene::Camera::Kind::Perspective);
+    const glm::dmat4 to_world(camera.camera_to_world);
+    return {glm::dvec3(to_world[3]), -glm::normalize(glm::dvec3(to_world[2])),
+            std::tan(0.5 * static_cast<double>(camera.yfov_rad)), height_px, static_cast<double>(rig.ipd_m),
+            static_cast<double>(rig.convergence_m)};
+}
+
 render::StereoRig showcase_rig(const render::Cameras& cameras, float ipd_m) {
     render::StereoRig rig;
     rig.ipd_m = ipd_m;
@@ -109,6 +139,28 @@ std::pair<int, int> mask_rows(const render_test::Mask& mask, int width_px) {
     return {first, last};
 }
 
+// The mirror's unoccluded top rows (its upper quarter) in each eye's mirror
+// mask: right eye's column minus left eye's, for its left and right edges.
+struct EdgeDisparities {
+    double left_px = 0, right_px = 0;
+    int rows = 0;
+};
+EdgeDisparities top_edge_disparities(const render_test::RenderEnvironment& r, const render::StereoCameras& eyes,
+                                     int eye_width_px, int height_px) {
+    const auto o = render_test::options(eye_width_px, height_px);
+    const render_test::Mask left_mask = render_test::mirror_mask(r, eyes.left, o);
+    const render_test::Mask right_mask = render_test::mirror_mask(r, eyes.right, o);
+    REQUIRE(render_test::count(left_mask) > 500);
+    const auto [first_row, last_row] = mask_rows(left_mask, eye_width_px);
+    EdgeDisparities d;
+    d.rows = std::max(1, (last_row - first_row + 1) / 4);
+    const Edges left_edges = top_edges(left_mask, eye_width_px, first_row, d.rows);
+    const Edges right_edges = top_edges(right_mask, eye_width_px, first_row, d.rows);
+    d.left_px = right_edges.left_px - left_edges.left_px;
+    d.right_px = right_edges.right_px - left_edges.right_px;
+    return d;
+}
+
 } // namespace
 
 TEST_SUITE("gl") {
@@ -129,8 +181,9 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
     }
 
     const render::StereoRig rig = showcase_rig(cameras, 0.064f);
+    const DirectStereo direct = direct_stereo(rig, render_test::kHeightPx);
     // The default converges on the mirror's centre.
-    CHECK(render::depth_m(*frame, mirror_centre(mirror)) == doctest::Approx(rig.convergence_m).epsilon(1e-6));
+    CHECK(direct.depth_m(mirror_centre(mirror)) == doctest::Approx(rig.convergence_m).epsilon(1e-6));
     auto eyes = render::stereo_eyes(cameras.main.pair, rig);
     REQUIRE_MESSAGE(eyes.ok(), eyes.error());
     // Each eye's inverse is its matrix's inverse (closed form, not inverted).
@@ -155,8 +208,11 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
     // degrees, so its sides are nearer and farther than its centre).
     for (const glm::dvec3 p : {glm::dvec3(mirror.corner), glm::dvec3(mirror.corner + mirror.a1),
                                glm::dvec3(mirror.corner + mirror.a1 + mirror.a2)}) {
-        const double predicted = render::predicted_disparity_px(*frame, rig, render::depth_m(*frame, p), kW);
+        const double predicted = direct.disparity_px(p);
         CHECK(disparity(eyes->left, eyes->right, p) == doctest::Approx(predicted).epsilon(1e-3).scale(1.0));
+        // The app's own formula (what the window prints), from the pair's frame: float rounding.
+        CHECK(render::predicted_disparity_px(*frame, rig, render::depth_m(*frame, p), kW) ==
+              doctest::Approx(predicted).epsilon(1e-5).scale(1.0));
     }
 
     // The sphere in each eye's own mirror pair (frustum::mirror of that eye):
@@ -166,8 +222,8 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
     auto right_mirror = frustum::mirror(eyes->right, plane);
     REQUIRE_MESSAGE(left_mirror.ok(), left_mirror.error());
     REQUIRE_MESSAGE(right_mirror.ok(), right_mirror.error());
-    const double reflected_depth_m = render::depth_m(*frame, reflected(mirror, kSphereCentre));
-    const double predicted = render::predicted_disparity_px(*frame, rig, reflected_depth_m, kW);
+    const double reflected_depth_m = direct.depth_m(reflected(mirror, kSphereCentre));
+    const double predicted = direct.disparity_px(reflected(mirror, kSphereCentre));
     const double measured = disparity(*left_mirror, *right_mirror, kSphereCentre);
     MESSAGE("reflected sphere: depth " << reflected_depth_m << " m (mirror " << rig.convergence_m
                                        << " m), disparity " << measured << " px, predicted " << predicted);
@@ -186,8 +242,7 @@ TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at 
     // A wide base (1 m) so the reflection's disparity is several pixels at
     // this size; the mirror is converged on (the default).
     const render::StereoRig rig = showcase_rig(cameras, 1.0f);
-    auto frame = render::camera_frame(cameras.main.pair);
-    REQUIRE_MESSAGE(frame.ok(), frame.error());
+    const DirectStereo direct = direct_stereo(rig, kH);
     auto eyes = render::stereo_cameras(cameras, rig);
     REQUIRE_MESSAGE(eyes.ok(), eyes.error());
 
@@ -216,19 +271,33 @@ TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at 
     if (pixel_x(cameras.main.pair, corners[0], kEyeW) > pixel_x(cameras.main.pair, corners[1], kEyeW)) {
         std::swap(corners[0], corners[1]);
     }
-    const auto predicted_at = [&](const glm::dvec3& p) {
-        return render::predicted_disparity_px(*frame, rig, render::depth_m(*frame, p), kEyeW);
-    };
+    const auto predicted_at = [&](const glm::dvec3& p) { return direct.disparity_px(p); };
     MESSAGE("mirror's top " << rows << " rows: edge disparities " << left_edge_px << " / " << right_edge_px
                             << " px (predicted " << predicted_at(corners[0]) << " / " << predicted_at(corners[1])
                             << "), middle " << mirror_shift_px << " px");
     CHECK(std::abs(mirror_shift_px) < 0.5);
-    // The edges are near vertical, so they land on whole columns: tolerance 1 px.
-    CHECK(std::abs(left_edge_px - predicted_at(corners[0])) <= 1.0);
-    CHECK(std::abs(right_edge_px - predicted_at(corners[1])) <= 1.0);
+    // The edges are near vertical, so they land on whole columns: at this
+    // base their disparities (under 1 px) cannot be told from 0. With a base
+    // 8 times as wide (8 m) they are predicted -4.31 / +1.61 px: tolerance
+    // 1 px (whole columns), so an edge that does not move, or moves the
+    // wrong way, fails. Measured: -3.67 / +1.67 px.
+    {
+        const render::StereoRig wide = showcase_rig(cameras, 8.0f);
+        const DirectStereo wide_direct = direct_stereo(wide, kH);
+        auto wide_eyes = render::stereo_cameras(cameras, wide);
+        REQUIRE_MESSAGE(wide_eyes.ok(), wide_eyes.error());
+        const EdgeDisparities e = top_edge_disparities(*r, *wide_eyes, kEyeW, kH);
+        const double left_predicted = wide_direct.disparity_px(corners[0]);
+        const double right_predicted = wide_direct.disparity_px(corners[1]);
+        MESSAGE("8 m base, mirror's top " << e.rows << " rows: edge disparities " << e.left_px << " / " << e.right_px
+                                          << " px (predicted " << left_predicted << " / " << right_predicted << ")");
+        REQUIRE(left_predicted < -1.5); // zero (or the wrong sign) is out of tolerance
+        REQUIRE(right_predicted > 1.5);
+        CHECK(std::abs(e.left_px - left_predicted) <= 1.0);
+        CHECK(std::abs(e.right_px - right_predicted) <= 1.0);
+    }
 
-    const double predicted = render::predicted_disparity_px(
-        *frame, rig, render::depth_m(*frame, reflected(*render_test::showcase().mirror, kSphereCentre)), kEyeW);
+    const double predicted = direct.disparity_px(reflected(*render_test::showcase().mirror, kSphereCentre));
     // Both reflection cameras that hide what is behind the mirror.
     for (const render::MirrorMethod method : {render::MirrorMethod::Oblique, render::MirrorMethod::Rectangle}) {
         const std::string name(render::to_string(method));

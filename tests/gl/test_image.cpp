@@ -6,6 +6,7 @@
 #include <image/image.hpp>
 #include <image/png.hpp>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -118,7 +119,7 @@ TEST_CASE("compare reports mean, max and pixels over the tolerance") {
     const auto loose = image::compare(a, b, 5);
     REQUIRE(loose.ok());
     CHECK(loose->pixel_count == 2);
-    CHECK(loose->mean_abs == doctest::Approx(1.0));
+    CHECK(loose->mean_abs == 1.0); // 8 / 8, exact in double
     CHECK(loose->max_abs == 5);
     CHECK(loose->pixels_over == 0);
     CHECK(loose->fraction_over() == 0.0);
@@ -135,6 +136,30 @@ TEST_CASE("compare reports mean, max and pixels over the tolerance") {
     const auto negative = image::compare(a, b, -1);
     REQUIRE_FALSE(negative.ok());
     CHECK(negative.error() == "image::compare(): tolerance must be >= 0, got -1");
+}
+
+TEST_CASE("compare sees every channel alone, in either direction, in any pixel") {
+    // One channel of one pixel of a 3x2 image differs by 7: the others are
+    // equal, so max 7, 1 pixel over tolerance 6, none over 7, mean 7 / 24.
+    const image::Image base = image::make_image(3, 2, {100, 110, 120, 130});
+    for (int pixel = 0; pixel < 6; ++pixel) {
+        for (int channel = 0; channel < 4; ++channel) {
+            for (int sign : {-1, 1}) {
+                CAPTURE(pixel);
+                CAPTURE(channel);
+                CAPTURE(sign);
+                image::Image other = base;
+                other.rgba[static_cast<std::size_t>(pixel * 4 + channel)] =
+                    static_cast<std::uint8_t>(base.rgba[static_cast<std::size_t>(pixel * 4 + channel)] + sign * 7);
+                const auto over = image::compare(base, other, 6);
+                REQUIRE(over.ok());
+                CHECK(over->max_abs == 7);
+                CHECK(over->pixels_over == 1);
+                CHECK(over->mean_abs == doctest::Approx(7.0 / 24.0).epsilon(1e-15));
+                CHECK(image::compare(other, base, 7)->pixels_over == 0);
+            }
+        }
+    }
 }
 
 TEST_CASE("diff_image amplifies and clamps the difference, alpha opaque") {
