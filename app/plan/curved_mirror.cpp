@@ -18,6 +18,9 @@ constexpr const char* kCreate = "render::CurvedMirror::create(): ";
 // the reflected volume is no frustum-like pyramid, e.g. one wider than 180
 // degrees (the showcase's cap with sagitta 0.9 m as a single patch: F = 2.94).
 constexpr double kMinObjective = 3.9;
+// fit_volume()'s Newton solves per patch at most (measured: at most 12 on the
+// showcase, sphere and cylinder, G = 1..32; docs/curved-mirror.md).
+constexpr int kMaxFitIterations = 50;
 
 glm::dvec3 to_d(const glm::vec3& v) { return glm::dvec3(v); }
 
@@ -260,7 +263,17 @@ frustum::Result<std::optional<CurvedPlan>> plan_curved_mirror(const CurvedMirror
             patch.start_objective = start && near.distance(*start) < 0.0
                                         ? frustum::volume_objective(target, *start)
                                         : std::numeric_limits<double>::quiet_NaN();
-            auto fit = frustum::fit_volume(target, diagonal_m, frustum::DepthRange::ZeroToOne);
+            // Warm start: the fitted origin of the patch to the left, else of
+            // the one below (neighbouring patches' origins lie close together;
+            // fit_volume() keeps the paper's start when it is no worse).
+            std::optional<glm::dvec3> warm;
+            if (i > 0 && plan.patches[static_cast<std::size_t>(j * grid + i - 1)].pair) {
+                warm = plan.patches[static_cast<std::size_t>(j * grid + i - 1)].origin;
+            } else if (j > 0 && plan.patches[static_cast<std::size_t>((j - 1) * grid + i)].pair) {
+                warm = plan.patches[static_cast<std::size_t>((j - 1) * grid + i)].origin;
+            }
+            auto fit = frustum::fit_volume(target, diagonal_m, frustum::DepthRange::ZeroToOne, kMaxFitIterations,
+                                           1e-10, warm);
             if (fit) {
                 patch.origin = fit->origin;
                 patch.objective = fit->objective;

@@ -6,6 +6,7 @@
 #include "frustum/reflect.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,63 @@ T volume_objective(const VolumeTarget<T>& target, const Vec3<T>& origin, Vec3<T>
 }
 
 namespace {
+
+// F(O), its gradient and its Hessian. n_i(O) = OX_i x OX_i+1 = X_i x X_i+1 -
+// d x O is affine in O (d = X_i - X_i+1), so with a = n.t and b = |n|^2:
+//   grad a = d x t,  grad b = 2 d x n,  hess a = 0,  hess b = 2 (|d|^2 I - d d^T),
+//   hess (a^2 / b) = 2 ga ga^T / b - 2 a (ga gb^T + gb ga^T) / b^2
+//                    - a^2 hess b / b^2 + 2 a^2 gb gb^T / b^3.
+template <class T>
+T objective_derivatives(const VolumeTarget<T>& target, const Vec3<T>& origin, Vec3<T>& gradient, Mat3<T>& hessian) {
+    T sum = T(0);
+    gradient = Vec3<T>(T(0));
+    hessian = Mat3<T>(T(0));
+    for (int i = 0; i < 4; ++i) {
+        const Vec3<T>& xi = target.near_points[i];
+        const Vec3<T>& xj = target.near_points[(i + 1) % 4];
+        const Vec3<T>& t = target.side_normals[i];
+        const Vec3<T> n = glm::cross(xi - origin, xj - origin);
+        const T b = glm::dot(n, n);
+        if (!(b > T(0))) {
+            continue; // as volume_objective
+        }
+        const T a = glm::dot(n, t);
+        const Vec3<T> d = xi - xj;
+        const Vec3<T> ga = glm::cross(d, t);
+        const Vec3<T> gb = T(2) * glm::cross(d, n);
+        const T inv_b = T(1) / b;
+        sum += a * a * inv_b;
+        gradient += (T(2) * a * inv_b) * ga - (a * a * inv_b * inv_b) * gb;
+        const Mat3<T> hess_b = T(2) * (glm::dot(d, d) * Mat3<T>(T(1)) - glm::outerProduct(d, d));
+        const Mat3<T> cross_terms = glm::outerProduct(ga, gb) + glm::outerProduct(gb, ga);
+        hessian += (T(2) * inv_b) * glm::outerProduct(ga, ga) - (T(2) * a * inv_b * inv_b) * cross_terms -
+                   (a * a * inv_b * inv_b) * hess_b + (T(2) * a * a * inv_b * inv_b * inv_b) * glm::outerProduct(gb, gb);
+    }
+    return sum;
+}
+
+// Solves A x = g for a symmetric positive definite 3x3 A (Cholesky); false
+// when A is not positive definite.
+template <class T>
+bool solve_positive_definite(const Mat3<T>& A, const Vec3<T>& g, Vec3<T>& x) {
+    const T l00s = A[0][0];
+    if (!(l00s > T(0))) return false;
+    const T l00 = std::sqrt(l00s);
+    const T l10 = A[0][1] / l00, l20 = A[0][2] / l00;
+    const T l11s = A[1][1] - l10 * l10;
+    if (!(l11s > T(0))) return false;
+    const T l11 = std::sqrt(l11s);
+    const T l21 = (A[1][2] - l20 * l10) / l11;
+    const T l22s = A[2][2] - l20 * l20 - l21 * l21;
+    if (!(l22s > T(0))) return false;
+    const T l22 = std::sqrt(l22s);
+    // L y = g, then L^T x = y.
+    const T y0 = g.x / l00, y1 = (g.y - l10 * y0) / l11, y2 = (g.z - l20 * y0 - l21 * y1) / l22;
+    x.z = y2 / l22;
+    x.y = (y1 - l21 * x.z) / l11;
+    x.x = (y0 - l10 * x.y - l20 * x.z) / l00;
+    return detail::finite3(x);
+}
 
 // Where three planes meet, if they do (Cramer's rule).
 template <class T>
@@ -87,7 +145,7 @@ Status check_target(const VolumeTarget<T>& target) {
 
 template <class T>
 Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m, DepthRange depth,
-                                int max_iterations, T tolerance) {
+                                int max_iterations, T tolerance, const std::optional<Vec3<T>>& start) {
     if (!(far_distance_m > T(0)) || !std::isfinite(far_distance_m)) {
         return detail::error<T>("fit_volume", "far distance must be > 0 and finite", {{"far", far_distance_m}});
     }
@@ -111,34 +169,63 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
         origin = centroid - near.normal() * size;
     }
 
+    // A warm start (the neighbouring patch's origin, the previous frame's)
+    // when it is behind the near plane and no worse than the paper's.
+    if (start && detail::finite3(*start) && near.distance(*start) < T(0) &&
+        volume_objective(target, *start) >= volume_objective(target, origin)) {
+        origin = *start;
+    }
+
+    // Newton's method on F with its analytic Hessian, damped (Levenberg-
+    // Marquardt: (mu I - H) step = grad, mu grown until the step gains and
+    // stays behind the near plane, shrunk after each gain). F is flat along
+    // the patch's axis (a near-zero eigenvalue of H), where a plain Newton
+    // step is unbounded; the damping bounds it. Stops when a step gains
+    // less than `tolerance`. Every solve counts as an iteration.
     Vec3<T> gradient;
-    T value = volume_objective(target, origin, &gradient);
+    Mat3<T> hessian;
+    T value = objective_derivatives(target, origin, gradient, hessian);
     int iterations = 0;
-    T step = T(1);
-    for (; iterations < max_iterations; ++iterations) {
-        // Backtracking (Armijo) line search along the gradient.
-        const T g2 = glm::dot(gradient, gradient);
-        if (!(g2 > T(0))) {
+    const T scale = std::max(std::abs(hessian[0][0]) + std::abs(hessian[1][1]) + std::abs(hessian[2][2]),
+                             std::numeric_limits<T>::min());
+    T damping = T(0);
+    int rejected = 0;
+    while (iterations < max_iterations) {
+        if (!(glm::dot(gradient, gradient) > T(0))) {
             break;
         }
-        bool improved = false;
-        for (int halvings = 0; halvings < 60; ++halvings) {
-            const Vec3<T> candidate = origin + step * gradient;
+        ++iterations;
+        Mat3<T> system = -hessian;
+        for (int k = 0; k < 3; ++k) {
+            system[k][k] += damping * scale;
+        }
+        Vec3<T> step;
+        bool accepted = false;
+        if (solve_positive_definite(system, gradient, step)) {
+            const Vec3<T> candidate = origin + step;
             Vec3<T> candidate_gradient;
-            const T candidate_value = volume_objective(target, candidate, &candidate_gradient);
-            if (near.distance(candidate) < T(0) && candidate_value >= value + detail::sufficient_increase<T>() * step * g2) {
+            Mat3<T> candidate_hessian;
+            const T candidate_value =
+                objective_derivatives(target, candidate, candidate_gradient, candidate_hessian);
+            if (near.distance(candidate) < T(0) && candidate_value >= value) {
                 const T gain = candidate_value - value;
                 origin = candidate;
                 value = candidate_value;
                 gradient = candidate_gradient;
-                step *= T(2);
-                improved = gain > tolerance;
-                break;
+                hessian = candidate_hessian;
+                damping *= T(0.1);
+                rejected = 0;
+                accepted = true;
+                if (!(gain > tolerance)) {
+                    break; // converged
+                }
             }
-            step /= T(2);
         }
-        if (!improved) {
-            break;
+        if (!accepted) {
+            damping = damping > T(0) ? damping * T(10) : T(1e-3);
+            if (++rejected > 40) {
+                break; // no step gains any more: F is at its maximum to rounding
+            }
         }
     }
 
@@ -170,7 +257,8 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
 
 #define FRUSTUM_INSTANTIATE(T)                                                                     \
     template T volume_objective(const VolumeTarget<T>&, const Vec3<T>&, Vec3<T>*);                 \
-    template Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>&, T, DepthRange, int, T);
+    template Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>&, T, DepthRange, int, T,                 \
+                                             const std::optional<Vec3<T>>&);
 FRUSTUM_INSTANTIATE(float)
 FRUSTUM_INSTANTIATE(double)
 

@@ -20,6 +20,7 @@
 #include "frustum/result.hpp"
 
 #include <array>
+#include <optional>
 
 namespace frustum {
 
@@ -40,19 +41,25 @@ template <class T>
 struct VolumeFit {
     Vec3<T> origin;     // the optimized O
     T objective = 0;    // F(O), at most 4
-    int iterations = 0; // gradient steps taken
+    int iterations = 0; // Newton solves taken
     MatrixPair<T> pair; // the frustum through O and X0..X3 with the near plane
 };
 
-// Gradient ascent with a backtracking line search, started at the point
-// where T0, T1 and T2 meet (the paper's start; the centroid of X shifted
-// back along the near normal when they do not meet in front of the near
-// plane). Stops when a step gains less than `tolerance` or after
-// max_iterations. far_distance_m: how far beyond the near points, along the
-// edges from O through X_i, the frustum reaches at least (the nearest far
-// plane that keeps all four edges inside that long, as for lens tiles).
+// Newton's method on F with its analytic Hessian (n_i is affine in O:
+// hess |n_i|^2 = 2 (|d|^2 I - d d^T), hess (n_i . t_i) = 0), damped
+// (Levenberg-Marquardt) where H is not negative definite or a step does not
+// gain, started at the point where T0, T1 and T2 meet (the paper's start;
+// the centroid of X shifted back along the near normal when they do not
+// meet in front of the near plane), or at `start` (a warm start: the
+// neighbouring patch's origin or the previous frame's) when that is behind
+// the near plane and F is no lower there. Stops when a step gains less than
+// `tolerance` or after max_iterations solves. far_distance_m: how far beyond
+// the near points, along the edges from O through X_i, the frustum reaches
+// at least (the nearest far plane that keeps all four edges inside that
+// long, as for lens tiles).
 template <class T>
 Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m, DepthRange depth,
-                                int max_iterations = 200, T tolerance = T(1e-10));
+                                int max_iterations = 200, T tolerance = T(1e-10),
+                                const std::optional<Vec3<T>>& start = std::nullopt);
 
 } // namespace frustum
