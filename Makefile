@@ -29,6 +29,8 @@ demo: deps $(BUILD)/CMakeCache.txt
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE web
+	@grep -q '^FRUSTUM_TEST_DATA:PATH=.' $(BUILD)/CMakeCache.txt || \
+	  echo "make test: the corpus tests were skipped: set FRUSTUM_TEST_DATA to a folder with gltf-samples/ and gltf-validator-corpus/"
 	$(MAKE) --no-print-directory test-asan
 
 # The whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer

@@ -5,7 +5,7 @@
 #   scripts/fuzz.sh [seconds-per-target]        (make fuzz FUZZ_SECONDS=600)
 # Environment: FUZZ_BUILD (build dir), FUZZ_TARGETS ("gltf vectors"), JOBS.
 # Inputs found along the way stay in build-fuzz/corpus/<target> (the seeds in
-# tests/fuzz/corpus are never written); crashes land in
+# tests/fuzz/corpus and tests/data/gltf-models are never written); crashes land in
 # build-fuzz/artifacts/<target>/ and make the script exit 1.
 # Memory: every input runs under a 1536 MiB RSS limit and a 1024 MiB limit
 # per allocation (libFuzzer's -rss_limit_mb / -malloc_limit_mb; an address-
@@ -45,11 +45,19 @@ for t in $targets; do
             failed=1
         fi
     fi
+    # Seeds: the target's corpus folder; for gltf also the generated models
+    # and the showcase (scripts/make_feature_gltf.py, make_showcase.py).
+    seeds=("$root/tests/fuzz/corpus/$t")
+    if [[ $t == gltf ]]; then
+        mkdir -p "$build/seeds-gltf"
+        cp "$root"/tests/data/gltf-models/*.gl* "$root/assets/showcase.gltf" "$build/seeds-gltf/"
+        seeds+=("$build/seeds-gltf")
+    fi
     before=$(find "$artifacts" -type f | wc -l)
     status=0
     "$exe" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=1536 -malloc_limit_mb=1024 -max_len="${max_len[$t]:-8192}" \
         -dict="$root/tests/fuzz/$t.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
-        "$corpus" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1 || status=$?
+        "$corpus" "${seeds[@]}" >"$log" 2>&1 || status=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
     [[ -n $execs ]] || execs=$(grep -o '^#[0-9]*' "$log" | tail -1 | tr -d '#')
     after=$(find "$artifacts" -type f | wc -l)

@@ -1,115 +1,29 @@
 #!/usr/bin/env python3
-"""Generate tests/data/gltf-features/*.gltf: one small glTF 2.0 file per
-loader feature (KHR_materials_unlit, texCoord sets, KHR_texture_transform,
-EXT_mesh_gpu_instancing, morph-target weights, alphaMode, orthographic
-aspect, a required extension that is not supported).
+"""Generate the project's own glTF test files, deterministically (Python 3,
+standard library only; the `scene` suite checks them byte for byte):
 
-Python 3, standard library only; deterministic. Every file has an
-orthographic camera "main" at (0, 0, 5) looking down -Z with xmag = ymag = 1,
-so world x, y in [-1, 1] fill a square image (tests/data/gltf-features/README.md).
+- tests/data/gltf-features/*.gltf: one small file per loader feature
+  (KHR_materials_unlit, texCoord sets, KHR_texture_transform,
+  EXT_mesh_gpu_instancing, morph-target weights, alphaMode, orthographic
+  aspect, texture orientation, a required extension that is not supported).
+  Every file has an orthographic camera "main" at (0, 0, 5) looking down -Z
+  with xmag = ymag = 1, so world x, y in [-1, 1] fill a square image
+  (tests/data/gltf-features/README.md).
+- tests/data/gltf-models/*: 3D models without a file camera, one per loader
+  feature a sample model would exercise (scripts/gltf_models.py,
+  tests/data/gltf-models/README.md).
+- tests/fuzz/corpus/gltf/: the generated fuzz seeds (scripts/gltf_seeds.py).
 
-    python3 scripts/make_feature_gltf.py [OUT_DIR]   # default tests/data/gltf-features
+    python3 scripts/make_feature_gltf.py [OUT_ROOT]   # default: the repository
 """
-import base64
-import json
 import math
 import os
-import struct
 import sys
-import zlib
 
-FLOAT, UBYTE = 5126, 5121
-
-
-def png_rgba(width, height, pixels):
-    """pixels: rows top to bottom of (r, g, b, a) bytes."""
-    raw = b"".join(b"\x00" + bytes(c for p in row for c in p) for row in pixels)
-
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 9)) +
-            chunk(b"IEND", b""))
-
-
-class Gltf:
-    def __init__(self):
-        self.data = bytearray()
-        self.j = {"asset": {"version": "2.0", "generator": "scripts/make_feature_gltf.py"},
-                  "scene": 0, "scenes": [{"nodes": []}], "nodes": [], "meshes": [], "materials": [],
-                  "accessors": [], "bufferViews": [], "buffers": []}
-        self.node({"name": "main", "camera": 0, "translation": [0, 0, 5]})
-        self.j["cameras"] = [{"name": "main", "type": "orthographic",
-                              "orthographic": {"xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 10.0}}]
-
-    def accessor(self, values, kind, component=FLOAT, normalized=False):
-        size = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[kind]
-        fmt = "<%d%s" % (len(values), "f" if component == FLOAT else "B")
-        while len(self.data) % 4:
-            self.data.append(0)
-        offset = len(self.data)
-        self.data += struct.pack(fmt, *values)
-        self.j["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(self.data) - offset})
-        acc = {"bufferView": len(self.j["bufferViews"]) - 1, "componentType": component,
-               "count": len(values) // size, "type": kind}
-        if normalized:
-            acc["normalized"] = True
-        if kind == "VEC3" and component == FLOAT:
-            acc["min"] = [min(values[i::3]) for i in range(3)]
-            acc["max"] = [max(values[i::3]) for i in range(3)]
-        self.j["accessors"].append(acc)
-        return len(self.j["accessors"]) - 1
-
-    def material(self, color, **extra):
-        m = {"pbrMetallicRoughness": {"baseColorFactor": list(color), "metallicFactor": 0.0}}
-        m.update(extra)
-        self.j["materials"].append(m)
-        return len(self.j["materials"]) - 1
-
-    def mesh(self, primitives, weights=None):
-        m = {"primitives": primitives}
-        if weights is not None:
-            m["weights"] = weights
-        self.j["meshes"].append(m)
-        return len(self.j["meshes"]) - 1
-
-    def node(self, fields):
-        self.j["nodes"].append(fields)
-        self.j["scenes"][0]["nodes"].append(len(self.j["nodes"]) - 1)
-        return len(self.j["nodes"]) - 1
-
-    def quad(self, x0, y0, x1, y1, z, material, colors=None, uv0=None, uv1=None, targets=None):
-        """Axis-aligned quad facing +Z, two triangles, uv (0, 0) at the top left."""
-        pos = [x0, y0, z, x1, y0, z, x1, y1, z, x0, y0, z, x1, y1, z, x0, y1, z]
-        uv = [0, 1, 1, 1, 1, 0, 0, 1, 1, 0, 0, 0]
-        attributes = {"POSITION": self.accessor(pos, "VEC3"), "NORMAL": self.accessor([0, 0, 1] * 6, "VEC3")}
-        if uv0 is not None:
-            attributes["TEXCOORD_0"] = self.accessor(uv0 if uv0 != "quad" else uv, "VEC2")
-        if uv1 is not None:
-            attributes["TEXCOORD_1"] = self.accessor(uv1 if uv1 != "quad" else uv, "VEC2")
-        if colors is not None:  # per corner: bottom-left, bottom-right, top-right, top-left
-            bl, br, tr, tl = colors
-            attributes["COLOR_0"] = self.accessor(bl + br + tr + bl + tr + tl, "VEC4")
-        p = {"attributes": attributes, "material": material}
-        if targets is not None:
-            p["targets"] = [{"POSITION": self.accessor(delta * 6, "VEC3")} for delta in targets]
-        return p
-
-    def texture(self, png):
-        self.j.setdefault("images", []).append(
-            {"uri": "data:image/png;base64," + base64.b64encode(png).decode("ascii")})
-        self.j.setdefault("textures", []).append({"source": len(self.j["images"]) - 1})
-        return len(self.j["textures"]) - 1
-
-    def text(self):
-        self.j["buffers"] = [{"byteLength": len(self.data),
-                              "uri": "data:application/octet-stream;base64," +
-                                     base64.b64encode(bytes(self.data)).decode("ascii")}]
-        for key in [k for k, v in self.j.items() if v == []]:
-            del self.j[key]
-        return json.dumps(self.j, indent=1, sort_keys=True) + "\n"
-
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gltf_models  # noqa: E402
+import gltf_seeds  # noqa: E402
+from gltf_writer import Gltf, png_rgba  # noqa: E402
 
 UNLIT = {"extensions": {"KHR_materials_unlit": {}}}
 
@@ -217,6 +131,20 @@ def orthographic_file():
     return g
 
 
+def orientation_file():
+    # A square with the orientation texture (scripts/gltf_models.py): red
+    # top left, green top right, blue bottom left, white bottom right in the
+    # picture; a flipped v puts blue on top, a flipped u green on the left.
+    g = Gltf()
+    m = g.material((1, 1, 1, 1), **UNLIT)
+    g.j["materials"][m]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": g.texture(gltf_models.QUADRANTS_PNG)}
+    g.j["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]  # NEAREST
+    g.j["textures"][0]["sampler"] = 0
+    g.node({"name": "square", "mesh": g.mesh([g.quad(-0.8, -0.8, 0.8, 0.8, 0, m, uv0="quad")])})
+    g.j["extensionsUsed"] = ["KHR_materials_unlit"]
+    return g
+
+
 def draco_file():
     # Valid, but requires an extension the loader does not implement.
     g = orthographic_file()
@@ -233,17 +161,31 @@ FILES = {
     "morph.gltf": morph_file,
     "alpha.gltf": alpha_file,
     "orthographic.gltf": orthographic_file,
+    "orientation.gltf": orientation_file,
     "draco_required.gltf": draco_file,
 }
 
 
+def write(path, content):
+    with open(path, "wb") as f:
+        f.write(content if isinstance(content, bytes) else content.encode("utf-8"))
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "tests", "data", "gltf-features")
-    os.makedirs(out, exist_ok=True)
+    root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..")
+    folders = {"features": os.path.join(root, "tests", "data", "gltf-features"),
+               "models": os.path.join(root, "tests", "data", "gltf-models"),
+               "seeds": os.path.join(root, "tests", "fuzz", "corpus", "gltf")}
+    for folder in folders.values():
+        os.makedirs(folder, exist_ok=True)
     for name, make in FILES.items():
-        with open(os.path.join(out, name), "w", newline="\n") as f:
-            f.write(make().text())
+        write(os.path.join(folders["features"], name), make().text())
+    for name, make in gltf_models.MODELS.items():
+        g = make()
+        write(os.path.join(folders["models"], name), g.binary() if name.endswith(".glb") else g.text())
+    for name, make in gltf_seeds.SEEDS.items():
+        write(os.path.join(folders["seeds"], name), make())
 
 
 if __name__ == "__main__":

@@ -8,19 +8,22 @@ endforeach()
 # The loader alone (also what the fresh-clone test builds in its clone).
 if(TARGET frustum_scene)
   frustum_test_suite(scene frustum_scene)
+  frustum_corpus_test(corpus-samples-load scene corpus-samples)  # tests/scene/samples_test.cpp
+  frustum_corpus_test(corpus-validator scene corpus-validator)   # tests/scene/validator_corpus_test.cpp
 endif()
 # The GL-free planning code alone: links no GL library, needs no context.
 if(TARGET frustum_plan)
   frustum_test_suite(plan frustum_plan)
 endif()
 frustum_test_suite(gl frustum::frustum ${_app_libs})
+frustum_corpus_test(corpus-samples-render gl corpus-samples)     # tests/gl/render_samples_test.cpp
 # The gl suite again on an OpenGL ES 3.0 context (what WebGL 2 and older
 # phones give), then also without GL_EXT_clip_control (the [-1, 1] path):
 # Mesa's overrides; gles30_context_test.cpp checks they took effect.
-add_test(NAME gl-es30 COMMAND test_gl)
+add_test(NAME gl-es30 COMMAND test_gl --test-suite-exclude=corpus-*)
 set_tests_properties(gl-es30 PROPERTIES LABELS gl SKIP_RETURN_CODE 77
                      ENVIRONMENT "MESA_GLES_VERSION_OVERRIDE=3.0;FRUSTUM_EXPECT_GLES=3.0")
-add_test(NAME gl-es30-no-clip-control COMMAND test_gl)
+add_test(NAME gl-es30-no-clip-control COMMAND test_gl --test-suite-exclude=corpus-*)
 set_tests_properties(gl-es30-no-clip-control PROPERTIES LABELS gl SKIP_RETURN_CODE 77
                      ENVIRONMENT "MESA_GLES_VERSION_OVERRIDE=3.0;MESA_EXTENSION_OVERRIDE=-GL_EXT_clip_control;FRUSTUM_EXPECT_GLES=3.0-no-clip-control")
 # The OpenGL ES 3.0 header: the entry-point table is checked against it.

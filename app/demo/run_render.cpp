@@ -50,7 +50,7 @@ EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, c
     if (scene.mirror) {
         const float limit_m = render::max_sagitta_m(*scene.mirror, settings.curved.shape);
         if (!settings.sagitta_given) {
-            options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, settings.curved.shape);
+            options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, settings.curved.shape, scene.world_bounds);
         } else if (!(settings.curved.sagitta_m <= limit_m)) {
             setup.sagitta_error = "--sagitta " + render::number_text(settings.curved.sagitta_m) +
                                   " must be in [0, " + render::number_text(limit_m) +

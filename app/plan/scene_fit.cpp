@@ -18,6 +18,7 @@ constexpr float kLensCenterLimit = 0.6f;      // derived lens centre: within the
 constexpr float kLensRadiusMin = 0.1f;        // derived lens radius, fraction of the half height
 constexpr float kLensRadiusMax = 0.4f;
 constexpr float kSagittaPerHalfDiagonal = 0.2f;
+constexpr float kSagittaPerModelReach = 0.25f; // the bulge: at most a quarter of the model's reach in front
 
 struct EyeAxes {
     frustum::NearPlaneFrame<float> frame;
@@ -141,8 +142,19 @@ float max_sagitta_m(const scene::MirrorRect& mirror, CapShape shape) {
     return 0.5f * d_m;
 }
 
-float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape) {
-    return kSagittaPerHalfDiagonal * 2.0f * max_sagitta_m(mirror, shape);
+float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape, const scene::Bounds& model_bounds) {
+    const float by_size_m = kSagittaPerHalfDiagonal * 2.0f * max_sagitta_m(mirror, shape);
+    // How far the model reaches in front of the mirror: the farthest corner
+    // of its bounds along the reflecting side's normal.
+    const glm::vec3 n = glm::normalize(glm::cross(mirror.a1, mirror.a2));
+    float reach_m = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? model_bounds.max.x : model_bounds.min.x,
+                               (i & 2) ? model_bounds.max.y : model_bounds.min.y,
+                               (i & 4) ? model_bounds.max.z : model_bounds.min.z);
+        reach_m = std::max(reach_m, glm::dot(corner - mirror.corner, n));
+    }
+    return reach_m > 0.0f ? std::min(by_size_m, kSagittaPerModelReach * reach_m) : by_size_m;
 }
 
 } // namespace render

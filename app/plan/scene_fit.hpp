@@ -50,7 +50,9 @@ frustum::Result<frustum::Lens<float>> fit_lens(const frustum::MatrixPair<float>&
 float max_sagitta_m(const scene::MirrorRect& mirror, CapShape shape);
 
 // The curved mirror's default sagitta: d / 5 (a fifth of the distance from
-// the mirror's centre to its rim).
-float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape);
+// the mirror's centre to its rim), and at most a quarter of how far the
+// model (`model_bounds`) reaches in front of the mirror's plane, so that a
+// bulging floor mirror under a small model does not swallow it.
+float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape, const scene::Bounds& model_bounds);
 
 } // namespace render

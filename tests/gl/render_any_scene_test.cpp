@@ -1,105 +1,12 @@
-// Every effect on every scene (docs/any-scene.md): each glTF sample and the
-// showcase, with the effect parameters derived from the scene and a mirror
-// placed when the scene has none, through both backends. Each image has
-// something besides the sky, and the mirror changes the plain frame only
-// inside the mirror's screen rectangle.
+// Every effect on every generated model and the showcase, both backends
+// (any_scene_check.hpp; the external samples corpus: render_samples_test.cpp).
 #include "../sample_files.hpp"
-#include "render_test_support.hpp"
-
-#include <plan/mirror_geometry.hpp>
-
-#include <cstdlib>
-#include <filesystem>
-#include <map>
-
-namespace {
-
-constexpr int kWidthPx = 96;
-constexpr int kHeightPx = 64;
-constexpr int kToleranceLsb = 2;
-constexpr int kMinNotSkyPixels = kWidthPx * kHeightPx / 100; // 1% of the image
-
-// Pixels more than kToleranceLsb away from the clear colour.
-int not_sky_pixels(const image::Image& picture) {
-    const glm::vec4 c = render::kClearColor;
-    const image::Image sky = image::make_image(
-        picture.width, picture.height,
-        {static_cast<std::uint8_t>(c.r * 255.0f + 0.5f), static_cast<std::uint8_t>(c.g * 255.0f + 0.5f),
-         static_cast<std::uint8_t>(c.b * 255.0f + 0.5f), 255});
-    const auto diff = image::compare(picture, sky, kToleranceLsb);
-    REQUIRE(diff.ok());
-    return diff->pixels_over;
-}
-
-struct MirrorDiff {
-    int inside = 0;  // pixels of the mirror's screen rectangle that differ
-    int outside = 0; // pixels elsewhere that differ
-};
-
-MirrorDiff mirror_diff(const image::Image& plain, const image::Image& mirror, const render::PixelRect& rect) {
-    MirrorDiff d;
-    for (int row = 0; row < plain.height; ++row) {
-        const int y = plain.height - 1 - row; // PixelRect counts from the bottom
-        for (int x = 0; x < plain.width; ++x) {
-            const image::Rgba a = image::pixel_at(plain, x, row), b = image::pixel_at(mirror, x, row);
-            bool differs = false;
-            for (int k = 0; k < 3; ++k) {
-                differs = differs || std::abs(int(a[k]) - int(b[k])) > kToleranceLsb;
-            }
-            const bool in = x >= rect.x && x < rect.x + rect.width && y >= rect.y && y < rect.y + rect.height;
-            (in ? d.inside : d.outside) += differs ? 1 : 0;
-        }
-    }
-    return d;
-}
-
-} // namespace
+#include "any_scene_check.hpp"
 
 TEST_SUITE("gl") {
 
-TEST_CASE("every effect on every sample and the showcase, both backends: non-flat, the mirror only where it is") {
-    const auto files = test_samples::scene_files();
-    for (gl::Backend backend : gl_test::kBackends) {
-        auto env = gl_test::make_environment(backend);
-        if (!env) {
-            continue;
-        }
-        for (const auto& file : files) {
-            INFO(gl::to_string(backend) << " " << file.filename().string());
-            auto scene = scene::load_gltf(file.string());
-            REQUIRE_MESSAGE(scene.ok(), scene.error());
-            const render_test::DerivedScene derived = render_test::derive_scene(*env, *scene, kWidthPx, kHeightPx);
-            const render::Cameras& cameras = derived.cameras;
-
-            std::map<render::Effect, image::Image> pictures;
-            for (render::Effect effect : render::kAllEffects) {
-                INFO(render::to_string(effect));
-                auto picture = derived.renderer->render(effect, cameras, derived.options);
-                REQUIRE_MESSAGE(picture.ok(), picture.error());
-                const int not_sky = not_sky_pixels(*picture);
-                CHECK(not_sky >= kMinNotSkyPixels);
-                if (not_sky < kMinNotSkyPixels) {
-                    render_test::save_failure("any-scene-" + file.stem().string() + "-" +
-                                                  std::string(render::to_string(effect)),
-                                              *picture, *picture);
-                }
-                pictures.emplace(effect, std::move(*picture));
-            }
-
-            const auto rect = render::mirror_screen_rect(*scene->mirror, cameras.main.pair, kWidthPx, kHeightPx);
-            REQUIRE_MESSAGE(rect, "the mirror is off-screen");
-            const image::Image& plain = pictures.at(render::Effect::Plain);
-            const image::Image& mirror = pictures.at(render::Effect::Mirror);
-            const MirrorDiff d = mirror_diff(plain, mirror, *rect);
-            MESSAGE(file.filename().string() << ": mirror rectangle " << rect->width << "x" << rect->height << ", "
-                                             << d.inside << " pixels reflect, " << d.outside << " elsewhere differ");
-            CHECK(d.inside >= kMinNotSkyPixels);
-            CHECK(d.outside == 0);
-            if (d.inside < kMinNotSkyPixels || d.outside != 0) {
-                render_test::save_failure("any-scene-mirror-" + file.stem().string(), plain, mirror);
-            }
-        }
-    }
+TEST_CASE("every effect on every generated model and the showcase, both backends: non-flat, the mirror only where it is") {
+    any_scene::check_every_effect(test_samples::scene_files());
 }
 
 } // TEST_SUITE

@@ -2,8 +2,9 @@
 # The repository stands on its own: clones SOURCE_DIR's committed HEAD into
 # an empty temporary folder (nothing beside the clone, so no path outside the
 # repository can resolve), configures it, builds only test_scene and runs
-# `ctest -L scene` there. Fails when a file the scene tests need (a vendored
-# sample model, its LICENSE.md) is missing from the commit.
+# `ctest -L scene` there, then checks that the corpus tests report a skip
+# without FRUSTUM_TEST_DATA. Fails when a file the scene tests need (a
+# generated model) is missing from the commit, or a vendored sample folder is in it.
 #   tests/package/fresh_clone.sh SOURCE_DIR BUILD_TYPE [COMPILER_LAUNCHER]
 # Exit 77 (CTest: skipped) when SOURCE_DIR is not a git repository.
 set -euo pipefail
@@ -45,29 +46,12 @@ git clone --quiet --no-checkout --no-hardlinks "$source_dir" "$clone"
 git -C "$clone" checkout --quiet --detach "$head"
 echo "fresh_clone: $head cloned into $clone (alone in $work)"
 
-# Every vendored model folder carries its model and its license, and the
-# folder's README accounts for it.
-samples=$clone/tests/data/gltf-samples
-if [[ ! -f $samples/README.md ]]; then
-  echo "fresh_clone: $samples/README.md is missing from the commit" >&2
+# The repository carries only the project's own files: no vendored sample
+# folder, and the generated test data is all the scene suite needs.
+if [[ -e $clone/tests/data/gltf-samples ]]; then
+  echo "fresh_clone: tests/data/gltf-samples is in the commit; third-party corpora are read from FRUSTUM_TEST_DATA" >&2
   exit 1
 fi
-models=0
-for dir in "$samples"/*/; do
-  model=$(basename "$dir")
-  for file in "$model.gltf" LICENSE.md; do
-    if [[ ! -f $dir/$file ]]; then
-      echo "fresh_clone: tests/data/gltf-samples/$model/$file is missing from the commit" >&2
-      exit 1
-    fi
-  done
-  if ! grep -q "^| $model |" "$samples/README.md"; then
-    echo "fresh_clone: tests/data/gltf-samples/README.md does not list $model" >&2
-    exit 1
-  fi
-  models=$((models + 1))
-done
-echo "fresh_clone: $models vendored models, each with its LICENSE.md"
 
 configure=(-S "$clone" -B "$clone/build" -DCMAKE_BUILD_TYPE="$build_type")
 if [[ -n $launcher ]]; then
@@ -76,6 +60,8 @@ if [[ -n $launcher ]]; then
   # of the previous one although the temporary folder differs.
   export CCACHE_BASEDIR=$clone CCACHE_NOHASHDIR=1
 fi
+# Alone: no external corpus, whatever the caller's environment names.
+unset FRUSTUM_TEST_DATA
 cmake "${configure[@]}" >"$work/configure.log" 2>&1 || {
   cat "$work/configure.log" >&2
   echo "fresh_clone: configuring the clone failed (log above)" >&2
@@ -88,3 +74,13 @@ cmake --build "$clone/build" -j 2 --target test_scene >"$work/build.log" 2>&1 ||
 }
 cd "$clone/build"
 ctest -L scene --output-on-failure --no-tests=error
+# The loader's corpus tests are there, and report a skip (not a pass) without the corpus.
+corpus_log=$work/corpus.log
+ctest -R '^corpus-(samples-load|validator)$' --no-tests=error >"$corpus_log" 2>&1 || { cat "$corpus_log" >&2; exit 1; }
+skipped=$(grep -c '\*\*\*Skipped' "$corpus_log" || true)
+if [[ $skipped -ne 2 ]]; then
+  cat "$corpus_log" >&2
+  echo "fresh_clone: the two loader corpus tests should report a skip without FRUSTUM_TEST_DATA, $skipped did" >&2
+  exit 1
+fi
+echo "fresh_clone: the corpus tests report a skip without FRUSTUM_TEST_DATA"

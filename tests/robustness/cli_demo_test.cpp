@@ -51,7 +51,7 @@ std::function<std::vector<std::string>(const rob::TempDir&)> scene_text(std::str
     };
 }
 
-const std::string kTriangle = std::string(FRUSTUM_SAMPLES_DIR) + "/Triangle/Triangle.gltf";
+const std::string kTriangle = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/triangle.gltf";
 
 const std::vector<DemoCase>& demo_cases() {
     static const std::vector<DemoCase> cases = {

@@ -40,7 +40,7 @@ struct GltfCase {
 };
 
 Json triangle() {
-    std::ifstream file(std::string(FRUSTUM_SAMPLES_DIR) + "/Triangle/Triangle.gltf");
+    std::ifstream file(std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/triangle.gltf");
     REQUIRE(file.good());
     return Json::parse(file);
 }

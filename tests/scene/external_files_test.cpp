@@ -23,7 +23,7 @@ scene::Scene load_ok(const fs::path& path) {
 }
 
 void check_same_box(const scene::Scene& loaded) {
-    const scene::Scene reference = load_ok(scene_test::sample_path("Box"));
+    const scene::Scene reference = load_ok(scene_test::model_path("box.gltf"));
     REQUIRE(loaded.meshes.size() == 1);
     CHECK(loaded.meshes[0].primitives[0].positions == reference.meshes[0].primitives[0].positions);
     CHECK(loaded.meshes[0].primitives[0].normals == reference.meshes[0].primitives[0].normals);
@@ -38,7 +38,7 @@ TEST_SUITE("scene") {
 
 TEST_CASE("external .bin files inside the model folder load") {
     scene_test::TempDir dir;
-    Json gltf = scene_test::read_json(scene_test::sample_path("Box"));
+    Json gltf = scene_test::read_json(scene_test::model_path("box.gltf"));
     const Bytes bytes = scene_test::buffer0(gltf);
 
     fs::create_directories(dir.path() / "data");
@@ -54,7 +54,7 @@ TEST_CASE("external .bin files inside the model folder load") {
 
 TEST_CASE("an external PNG and a PNG in a bufferView decode") {
     scene_test::TempDir dir;
-    Json gltf = scene_test::read_json(scene_test::sample_path("BoxTextured"));
+    Json gltf = scene_test::read_json(scene_test::model_path("box_textured.gltf"));
     const std::string uri = gltf["images"][0]["uri"];
     fs::create_directories(dir.path() / "textures");
     scene_test::write_bytes(dir.path() / "textures" / "logo.png",
@@ -70,36 +70,43 @@ TEST_CASE("an external PNG and a PNG in a bufferView decode") {
     scene_test::write_text(dir.path() / "embedded.gltf", embedded.dump());
     const scene::Scene from_view = load_ok(dir.path() / "embedded.gltf");
 
-    const scene::Scene reference = load_ok(scene_test::sample_path("BoxTextured"));
+    const scene::Scene reference = load_ok(scene_test::model_path("box_textured.gltf"));
     for (const scene::Scene* s : {&from_file, &from_view}) {
         REQUIRE(s->images.size() == 1);
-        CHECK(s->images[0].width == 256);
-        CHECK(s->images[0].height == 256);
+        CHECK(s->images[0].width == 4);
+        CHECK(s->images[0].height == 4);
         CHECK(s->images[0].rgba == reference.images[0].rgba);
         CHECK(s->materials[0].base_color_texture == 0);
     }
 }
 
-TEST_CASE("GLB: Box and Duck (image in a bufferView) load like their .gltf") {
+TEST_CASE("GLB: the box and the torus (image in a bufferView) load like their .gltf") {
     scene_test::TempDir dir;
-    const Json box = scene_test::read_json(scene_test::sample_path("Box"));
+    const Json box = scene_test::read_json(scene_test::model_path("box.gltf"));
     scene_test::write_bytes(dir.path() / "box.glb", scene_test::make_glb(box, scene_test::buffer0(box)));
     check_same_box(load_ok(dir.path() / "box.glb"));
 
-    Json duck = scene_test::read_json(scene_test::sample_path("Duck"));
-    scene_test::image0_into_buffer_view(duck);
-    scene_test::write_bytes(dir.path() / "duck.glb", scene_test::make_glb(duck, scene_test::buffer0(duck)));
-    const scene::Scene s = load_ok(dir.path() / "duck.glb");
+    Json torus = scene_test::read_json(scene_test::model_path("torus.gltf"));
+    scene_test::image0_into_buffer_view(torus);
+    scene_test::write_bytes(dir.path() / "torus.glb", scene_test::make_glb(torus, scene_test::buffer0(torus)));
+    const scene::Scene s = load_ok(dir.path() / "torus.glb");
+    const scene::Scene reference = load_ok(scene_test::model_path("torus.gltf"));
     REQUIRE(s.images.size() == 1);
-    CHECK(s.images[0].width == 512);
-    CHECK(s.images[0].height == 512);
+    CHECK(s.images[0].width == 4);
+    CHECK(s.images[0].height == 4);
+    CHECK(s.images[0].rgba == reference.images[0].rgba);
     CHECK(s.cameras.size() == 1);
-    CHECK(s.meshes[0].primitives[0].positions.size() == 2399);
+    CHECK(s.meshes[0].primitives[0].positions.size() == 49u * 33u);
+    CHECK(s.meshes[0].primitives[0].positions == reference.meshes[0].primitives[0].positions);
+    // The generator's own .glb (image in the BIN chunk) too.
+    const scene::Scene packed = load_ok(scene_test::model_path("torus.glb"));
+    CHECK(packed.meshes[0].primitives[0].positions == reference.meshes[0].primitives[0].positions);
+    CHECK(packed.images[0].rgba == reference.images[0].rgba);
 }
 
 TEST_CASE("GLB: a chunk of unknown type after BIN is ignored") {
     scene_test::TempDir dir;
-    const Json box = scene_test::read_json(scene_test::sample_path("Box"));
+    const Json box = scene_test::read_json(scene_test::model_path("box.gltf"));
     Bytes glb = scene_test::make_glb(box, scene_test::buffer0(box));
     const Bytes extra = {4, 0, 0, 0, 'X', 'T', 'R', 'A', 1, 2, 3, 4};
     glb.insert(glb.end(), extra.begin(), extra.end());

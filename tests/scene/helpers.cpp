@@ -10,8 +10,8 @@ namespace scene_test {
 
 namespace fs = std::filesystem;
 
-std::string sample_path(const std::string& model) {
-    return std::string(FRUSTUM_SAMPLES_DIR) + "/" + model + "/" + model + ".gltf";
+std::string model_path(const std::string& name) {
+    return std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/" + name;
 }
 
 std::string showcase_path() { return std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf"; }

@@ -1,4 +1,4 @@
-// Shared helpers for the scene suite: temp folders, sample paths, JSON
+// Shared helpers for the scene suite: temp folders, model paths, JSON
 // mutation, base64 and GLB packing. Test-only code.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace scene_test {
 using Json = nlohmann::json;
 using Bytes = std::vector<std::uint8_t>;
 
-std::string sample_path(const std::string& model); // "Box" -> .../Box/Box.gltf
+std::string model_path(const std::string& name); // "box.gltf" -> tests/data/gltf-models/box.gltf
 std::string showcase_path();
 
 Bytes read_bytes(const std::filesystem::path& path);

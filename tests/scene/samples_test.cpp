@@ -1,4 +1,8 @@
-// Every Khronos sample in FRUSTUM_SAMPLES_DIR loads, with the expected content.
+// Every Khronos sample of the external corpus (FRUSTUM_TEST_DATA/gltf-samples,
+// not part of the repository: CTest's corpus-samples-load, a skip when
+// FRUSTUM_TEST_DATA is not set) loads, with the expected content. The
+// project's own models cover the same loader features in models_test.cpp.
+#include "../sample_files.hpp"
 #include "helpers.hpp"
 
 #include "scene/load_gltf.hpp"
@@ -11,9 +15,12 @@
 
 #include <set>
 
-using scene_test::sample_path;
-
 namespace {
+
+// FRUSTUM_TEST_DATA/gltf-samples/<model>/<model>.gltf
+std::string sample(const std::filesystem::path& samples, const std::string& model) {
+    return (samples / model / (model + ".gltf")).string();
+}
 
 scene::Scene load_ok(const std::string& path, const scene::LoadOptions& options = {}) {
     frustum::Result<scene::Scene> result = scene::load_gltf(path, options);
@@ -45,9 +52,11 @@ const scene::Instance& instance_named(const scene::Scene& s, const std::string& 
 
 } // namespace
 
-TEST_SUITE("scene") {
+TEST_SUITE("corpus-samples") {
 
 TEST_CASE("every sample loads with the expected mesh and instance counts") {
+    const auto folder = test_samples::corpus_folder("gltf-samples");
+    if (!folder) return;
     struct Expected {
         const char* model;
         std::size_t meshes;
@@ -68,7 +77,7 @@ TEST_CASE("every sample loads with the expected mesh and instance counts") {
     };
     for (const Expected& expected : samples) {
         CAPTURE(expected.model);
-        const scene::Scene s = load_ok(sample_path(expected.model));
+        const scene::Scene s = load_ok(sample(*folder, expected.model));
         CHECK(s.meshes.size() == expected.meshes);
         CHECK(s.instances.size() == expected.instances);
         CHECK(s.cameras.size() == expected.cameras);
@@ -92,7 +101,9 @@ TEST_CASE("every sample loads with the expected mesh and instance counts") {
 }
 
 TEST_CASE("Duck: camera, decoded texture, node scale in the bounds") {
-    const scene::Scene s = load_ok(sample_path("Duck"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "Duck"));
     REQUIRE(s.images.size() == 1);
     CHECK(s.images[0].width == 512);
     CHECK(s.images[0].height == 512);
@@ -129,7 +140,9 @@ TEST_CASE("Duck: camera, decoded texture, node scale in the bounds") {
 }
 
 TEST_CASE("Cameras: perspective and orthographic with their node transforms") {
-    const scene::Scene s = load_ok(sample_path("Cameras"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "Cameras"));
     REQUIRE(s.cameras.size() == 2);
     CHECK(s.cameras[0].kind == scene::Camera::Kind::Perspective);
     CHECK(s.cameras[0].yfov_rad == doctest::Approx(0.7));
@@ -145,7 +158,9 @@ TEST_CASE("Cameras: perspective and orthographic with their node transforms") {
 }
 
 TEST_CASE("MeshPrimitiveModes has all seven modes") {
-    const scene::Scene s = load_ok(sample_path("MeshPrimitiveModes"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "MeshPrimitiveModes"));
     std::set<scene::PrimitiveMode> modes;
     for (const scene::Mesh& mesh : s.meshes) {
         for (const scene::Primitive& primitive : mesh.primitives) modes.insert(primitive.mode);
@@ -157,20 +172,24 @@ TEST_CASE("MeshPrimitiveModes has all seven modes") {
 }
 
 TEST_CASE("MultipleScenes: default scene 1, or the scene asked for") {
-    const scene::Scene by_default = load_ok(sample_path("MultipleScenes"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene by_default = load_ok(sample(*samples, "MultipleScenes"));
     REQUIRE(by_default.instances.size() == 1);
     CHECK(by_default.instances[0].mesh == 1);
 
     scene::LoadOptions first;
     first.scene_index = 0;
-    const scene::Scene scene0 = load_ok(sample_path("MultipleScenes"), first);
+    const scene::Scene scene0 = load_ok(sample(*samples, "MultipleScenes"), first);
     REQUIRE(scene0.instances.size() == 1);
     CHECK(scene0.instances[0].mesh == 0);
     CHECK(scene0.meshes.size() == 2); // every mesh is loaded; instances pick
 }
 
 TEST_CASE("SimpleSparseAccessor: sparse values replace the dense ones") {
-    const scene::Scene s = load_ok(sample_path("SimpleSparseAccessor"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "SimpleSparseAccessor"));
     const std::vector<glm::vec3>& positions = s.meshes[0].primitives[0].positions;
     REQUIRE(positions.size() == 14);
     CHECK(positions[7] == glm::vec3(0, 1, 0));   // untouched
@@ -182,19 +201,25 @@ TEST_CASE("SimpleSparseAccessor: sparse values replace the dense ones") {
 }
 
 TEST_CASE("TriangleWithoutIndices gets indices 0..n-1") {
-    const scene::Scene s = load_ok(sample_path("TriangleWithoutIndices"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "TriangleWithoutIndices"));
     CHECK(s.meshes[0].primitives[0].indices == std::vector<std::uint32_t>{0, 1, 2});
 }
 
 TEST_CASE("BoxVertexColors: COLOR_0 as RGBA with alpha 1") {
-    const scene::Scene s = load_ok(sample_path("BoxVertexColors"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "BoxVertexColors"));
     const scene::Primitive& primitive = s.meshes[0].primitives[0];
     REQUIRE(primitive.colors.size() == 24);
     for (const glm::vec4& color : primitive.colors) CHECK(color.a == 1.0f);
 }
 
 TEST_CASE("Box: the parent node matrix becomes the instance's world transform") {
-    const scene::Scene s = load_ok(sample_path("Box"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "Box"));
     REQUIRE(s.instances.size() == 1);
     const glm::mat4 rotation_x(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0),
                                glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));
@@ -206,7 +231,7 @@ TEST_CASE("Box: the parent node matrix becomes the instance's world transform") 
 
     // The same box moved by the matrix's translation column: the bounds follow.
     scene_test::TempDir dir;
-    scene_test::Json gltf = scene_test::read_json(sample_path("Box"));
+    scene_test::Json gltf = scene_test::read_json(sample(*samples, "Box"));
     gltf["nodes"][0]["matrix"][12] = 10.0;
     gltf["nodes"][0]["matrix"][14] = -2.0;
     const std::string moved = (dir.path() / "moved.gltf").string();
@@ -217,7 +242,9 @@ TEST_CASE("Box: the parent node matrix becomes the instance's world transform") 
 }
 
 TEST_CASE("OrientationTest: TRS and matrix nodes") {
-    const scene::Scene s = load_ok(sample_path("OrientationTest"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene s = load_ok(sample(*samples, "OrientationTest"));
     // ArrowX1: translation (5,0,0), rotation quaternion about -X, scale ~1.
     const scene::Instance& trs = instance_named(s, "ArrowX1");
     const glm::quat q(0.9537169933319092f, -0.30070576071739197f, 0.0f, 0.0f);
@@ -240,14 +267,16 @@ TEST_CASE("OrientationTest: TRS and matrix nodes") {
 }
 
 TEST_CASE("textured samples decode their images to RGBA8") {
-    const scene::Scene box = load_ok(sample_path("BoxTextured"));
+    const auto samples = test_samples::corpus_folder("gltf-samples");
+    if (!samples) return;
+    const scene::Scene box = load_ok(sample(*samples, "BoxTextured"));
     REQUIRE(box.images.size() == 1);
     CHECK(box.images[0].width == 256);
     CHECK(box.images[0].height == 256);
     CHECK(box.images[0].rgba.size() == 256u * 256u * 4u);
     CHECK(box.materials[0].base_color_texture == 0);
 
-    const scene::Scene uv = load_ok(sample_path("TextureCoordinateTest"));
+    const scene::Scene uv = load_ok(sample(*samples, "TextureCoordinateTest"));
     CHECK(uv.images[0].width == 512);
     CHECK(uv.images[0].height == 512);
 }

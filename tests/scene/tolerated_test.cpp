@@ -38,7 +38,7 @@ std::size_t primitive_count(const scene::Scene& scene) {
 
 TEST_CASE("a primitive without POSITION is skipped, the others drawn (glTF 2.0 3.7.2.1)") {
     scene_test::TempDir dir;
-    Json gltf = scene_test::read_json(scene_test::sample_path("Box"));
+    Json gltf = scene_test::read_json(scene_test::model_path("box.gltf"));
     Json primitive = gltf["meshes"][0]["primitives"][0];
     primitive["attributes"].erase("POSITION");
     gltf["meshes"][0]["primitives"].push_back(primitive);
@@ -50,7 +50,7 @@ TEST_CASE("a primitive without POSITION is skipped, the others drawn (glTF 2.0 3
 
 TEST_CASE("a skin without inverseBindMatrices loads, in .gltf and .glb, as the skin with them") {
     scene_test::TempDir dir;
-    const Json original = scene_test::read_json(scene_test::sample_path("SimpleSkin"));
+    const Json original = scene_test::read_json(scene_test::model_path("skin.gltf"));
     REQUIRE(original.contains("animations"));
     Json gltf = original;
     gltf["skins"][0].erase("inverseBindMatrices");
@@ -68,7 +68,7 @@ TEST_CASE("a skin without inverseBindMatrices loads, in .gltf and .glb, as the s
 
 TEST_CASE("an animation channel target without node (KHR_animation_pointer) loads") {
     scene_test::TempDir dir;
-    Json gltf = scene_test::read_json(scene_test::sample_path("AnimatedTriangle"));
+    Json gltf = scene_test::read_json(scene_test::model_path("skin.gltf"));
     Json& target = gltf["animations"][0]["channels"][0]["target"];
     target.erase("node");
     target["path"] = "pointer";
@@ -81,7 +81,7 @@ TEST_CASE("an animation channel target without node (KHR_animation_pointer) load
 
 TEST_CASE("an image no texture draws need not decode; one a texture draws must") {
     scene_test::TempDir dir;
-    Json gltf = scene_test::read_json(scene_test::sample_path("BoxTextured"));
+    Json gltf = scene_test::read_json(scene_test::model_path("box_textured.gltf"));
     // A WebP image, as EXT_texture_webp names beside a PNG fallback (tinygltf
     // does not read image/webp data uris), and RIFF bytes labelled PNG
     // (the decoder refuses them).

@@ -131,14 +131,16 @@ TEST_CASE("the panel's command line: set replaces, remove drops, and a refused v
 }
 
 TEST_CASE("the scene files beside one: its folder's and the folders' next to it, sorted") {
-    // A sample: every vendored sample (one per folder) and nothing else.
-    const std::vector<std::filesystem::path> all = test_samples::scene_files();
-    std::vector<std::string> samples;
-    for (auto it = all.begin() + 1; it != all.end(); ++it) { // [0] is the showcase
-        samples.push_back(it->string());
+    // A generated model: every model of its folder and every feature file
+    // of the folder next to it (tests/data/gltf-models, gltf-features), and nothing else.
+    const std::filesystem::path data = std::filesystem::path(FRUSTUM_SOURCE_DIR) / "tests/data";
+    std::vector<std::string> expected;
+    for (const char* folder : {"gltf-features", "gltf-models"}) {
+        for (const auto& file : test_samples::gltf_files_under(data / folder)) expected.push_back(file.string());
     }
-    const std::string box = std::string(FRUSTUM_SAMPLES_DIR) + "/Box/Box.gltf";
-    CHECK(demo::scene_files_beside(box) == samples);
+    std::sort(expected.begin(), expected.end());
+    REQUIRE(expected.size() == 9 + 16);
+    CHECK(demo::scene_files_beside(test_samples::model_path("box.gltf")) == expected);
     // The showcase: itself among them (its folder's only scene file).
     const std::string showcase = std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf";
     const std::vector<std::string> near_showcase = demo::scene_files_beside(showcase);

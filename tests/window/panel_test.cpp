@@ -113,13 +113,14 @@ TEST_CASE("clicks on the panel change the effect and the lens power; a refused v
     CHECK(pixels_differing(crop(c, 0, 20, kPanelPx, 45), crop(d, 0, 20, kPanelPx, 45)) > kDiffers); // the message on top
 }
 
-TEST_CASE("the scene file control loads another sample, and a missing file leaves the old one on screen") {
+TEST_CASE("the scene file control loads another scene, and a missing file leaves the old one on screen") {
     TempDir dir;
-    const std::string box = std::string(FRUSTUM_SAMPLES_DIR) + "/Box/Box.gltf";
-    const std::string duck = std::string(FRUSTUM_SAMPLES_DIR) + "/Duck/Duck.gltf";
-    // Duck's place in the "beside it" list, as the panel derives it (the script clicks rows 0..7).
+    const std::string box = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/box.gltf";
+    // The other scene: the textured square of the feature files (tests/data/gltf-features, the folder next to box's).
+    const std::string other = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-features/orientation.gltf";
+    // Its place in the "beside it" list, as the panel derives it (the script clicks rows 0..7).
     const std::vector<std::string> beside = demo::scene_files_beside(box);
-    const auto at = std::find(beside.begin(), beside.end(), duck);
+    const auto at = std::find(beside.begin(), beside.end(), other);
     REQUIRE(at != beside.end());
     const long index = at - beside.begin();
     REQUIRE(index < 8);
@@ -128,12 +129,12 @@ TEST_CASE("the scene file control loads another sample, and a missing file leave
         return;
     }
     const image::Image &a = child->a, &b = child->b, &c = child->c, &d = child->d;
-    // Duck chosen: the view changes, and with the panel hidden it is render's Duck.
+    // The square chosen: the view changes, and with the panel hidden it is what render draws of it.
     CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
-    const image::Image rendered = render_offscreen(dir, "plain", "480x480", {"--scene", duck});
-    check_similar(beside_panel(b), beside_panel(rendered), "Duck loaded");
-    check_similar(d, rendered, "Duck loaded, panel hidden");
-    // The missing file: its error on top of the panel, the Duck still on screen.
+    const image::Image rendered = render_offscreen(dir, "plain", "480x480", {"--scene", other});
+    check_similar(beside_panel(b), beside_panel(rendered), "the square loaded");
+    check_similar(d, rendered, "the square loaded, panel hidden");
+    // The missing file: its error on top of the panel, the square still on screen.
     check_similar(beside_panel(c), beside_panel(b), "missing file");
     CHECK(pixels_differing(crop(b, 0, 20, kPanelPx, 45), crop(c, 0, 20, kPanelPx, 45)) > kDiffers);
     CHECK(child->child.err.find("does not exist") == std::string::npos); // shown in the panel, not printed
