@@ -92,3 +92,6 @@ for g in 4 16; do
 done
 echo
 echo "(instructions per tile, float; the loop around the calls is under 1 per tile)"
+echo
+echo "| curved-mirror patch fit (fit_volume, double, Newton) | $(per_tile fit_volume 1) instructions per fit |"
+echo "|---|---|"

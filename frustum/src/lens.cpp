@@ -136,7 +136,9 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
             const std::size_t k = half_index * n + static_cast<std::size_t>(c);
             const T v_x = column_x[c].x - lens.center_m.x;
             const T length2 = v_x * v_x + y_m * y_m;
-            const T factor = length2 == T(0) ? T(0) : std::pow(length2 * inv_radius2, exponent);
+            const T scaled = length2 * inv_radius2;
+            // r^(p - 1) = scaled^((p - 1) / 2); p = 2 (the sample app's lens) is a square root.
+            const T factor = length2 == T(0) ? T(0) : exponent == T(0.5) ? std::sqrt(scaled) : std::pow(scaled, exponent);
             const T u = lens.center_m.x + factor * v_x, w = lens.center_m.y + factor * y_m;
             plane[k] = Vec4<T>(u, w, T(0), T(0));
             corners[k] = detail::store<T>(center_w + x_axis * u + y_axis * w);
@@ -205,6 +207,7 @@ Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px
                              !detail::lens_tile_rows(columns_relative, shared, rows_relative)) {
                              return false;
                          }
+                         detail::lens_tile_match_row2(rows_relative, shared, columns_relative);
                          if (matrices == nullptr) {
                              matrices = TileGridWriter::matrices(out);
                              inverses = TileGridWriter::inverses(out);

@@ -7,13 +7,19 @@
 #include "reinvert.hpp"
 
 #include <frustum/crop.hpp>
+#include <frustum/detail/tolerances.hpp>
 #include <frustum/lens.hpp>
+#include <frustum/queries.hpp>
+#include <frustum/volume_approximation.hpp>
+#include <plan/curved_mirror.hpp>
 #include <frustum/mirror.hpp>
 #include <frustum/projection.hpp>
 
 #include <benchmark/benchmark.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <map>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -122,6 +128,103 @@ void run_ring(benchmark::State& state, F&& frame) {
     }
 }
 
+// The curved mirror's fits (docs/curved-mirror.md): the showcase's sphere
+// cap, sagitta 0.3 m, seen from the main camera; every patch's target built
+// once, outside the timed loop.
+struct CurvedCase {
+    std::vector<frustum::VolumeTarget<double>> targets; // index j * G + i
+    double far_m = 1.0;
+};
+const CurvedCase& curved_case(int grid) {
+    static std::map<int, CurvedCase> cases;
+    auto found = cases.find(grid);
+    if (found != cases.end()) {
+        return found->second;
+    }
+    const auto mirror = render::CurvedMirror::create(*showcase().mirror, render::CapShape::Sphere, 0.3);
+    const auto eye = frustum::eye_point(main_camera());
+    CurvedCase c;
+    c.far_m = std::max(glm::length(glm::dvec3(showcase().world_bounds.max - showcase().world_bounds.min)), 1.0);
+    for (int j = 0; j < grid; ++j) {
+        for (int i = 0; i < grid; ++i) {
+            c.targets.push_back(render::patch_target(*mirror, glm::dvec3(*eye), grid, i, j));
+        }
+    }
+    return cases.emplace(grid, std::move(c)).first->second;
+}
+
+// fit_volume() before issue 34, kept here as the baseline: gradient ascent
+// with backtracking (Armijo) from the paper's start, the step doubled after
+// each gain, at most 200 steps (its default), then the same frustum.
+frustum::Result<frustum::VolumeFit<double>> former_fit(const frustum::VolumeTarget<double>& target, double far_m) {
+    const auto start = frustum::fit_volume(target, far_m, frustum::DepthRange::ZeroToOne, 0); // the paper's start
+    if (!start) {
+        return start;
+    }
+    const frustum::Plane<double> near = target.near.normalized();
+    glm::dvec3 origin = start->origin, gradient;
+    double value = frustum::volume_objective(target, origin, &gradient), step = 1.0;
+    int iterations = 0;
+    for (; iterations < 200; ++iterations) {
+        const double g2 = glm::dot(gradient, gradient);
+        if (!(g2 > 0.0)) break;
+        bool improved = false;
+        for (int halvings = 0; halvings < 60; ++halvings) {
+            const glm::dvec3 candidate = origin + step * gradient;
+            glm::dvec3 g;
+            const double v = frustum::volume_objective(target, candidate, &g);
+            if (near.distance(candidate) < 0.0 &&
+                v >= value + frustum::detail::sufficient_increase<double>() * step * g2) {
+                improved = v - value > 1e-10;
+                origin = candidate, value = v, gradient = g, step *= 2.0;
+                break;
+            }
+            step /= 2.0;
+        }
+        if (!improved) break;
+    }
+    // The frustum through the ascent's origin: fit_volume() from there, 0 solves.
+    auto fit = frustum::fit_volume(target, far_m, frustum::DepthRange::ZeroToOne, 0, 1e-10,
+                                   std::optional<glm::dvec3>(origin));
+    if (fit) {
+        fit->iterations = iterations;
+    }
+    return fit;
+}
+
+// Every patch of a G x G cap: Newton (warm-started from the left or lower
+// neighbour, as render::plan_curved_mirror does) or the former ascent.
+void curved_fits(benchmark::State& state, int grid, bool newton) {
+    const CurvedCase& c = curved_case(grid);
+    std::vector<std::optional<glm::dvec3>> origins(c.targets.size());
+    double steps = 0.0, objective = 0.0;
+    std::int64_t fits = 0;
+    for (auto _ : state) {
+        for (int j = 0; j < grid; ++j) {
+            for (int i = 0; i < grid; ++i) {
+                const std::size_t k = static_cast<std::size_t>(j * grid + i);
+                std::optional<glm::dvec3> warm;
+                if (i > 0) warm = origins[k - 1];
+                else if (j > 0) warm = origins[k - static_cast<std::size_t>(grid)];
+                auto fit = newton ? frustum::fit_volume(c.targets[k], c.far_m, frustum::DepthRange::ZeroToOne, 50,
+                                                        1e-10, warm)
+                                  : former_fit(c.targets[k], c.far_m);
+                origins[k] = fit ? std::optional<glm::dvec3>(fit->origin) : std::nullopt;
+                if (fit) {
+                    steps += fit->iterations;
+                    objective += fit->objective;
+                    ++fits;
+                }
+                benchmark::DoNotOptimize(fit);
+            }
+        }
+    }
+    state.counters["steps"] = steps / static_cast<double>(std::max<std::int64_t>(fits, 1));
+    state.counters["F_mean"] = objective / static_cast<double>(std::max<std::int64_t>(fits, 1));
+    state.counters["per_patch_us"] = benchmark::Counter(static_cast<double>(state.iterations()) * grid * grid,
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 } // namespace
 
 void register_cpu_benchmarks() {
@@ -140,6 +243,42 @@ void register_cpu_benchmarks() {
                                              auto tiles = frustum::lens_tiles(draw.camera, draw.lens, kWidthPx,
                                                                               kHeightPx, n, n);
                                              benchmark::DoNotOptimize(tiles);
+                                         }
+                                     })
+            ->Unit(benchmark::kMicrosecond);
+        // The renderer's lens frame (render::draw_lens_frame's CPU part: the
+        // vector of tiles it draws from; no per-tile refit since the library
+        // hands each tile its far plane) next to the grid form alone.
+        benchmark::RegisterBenchmark(("cpu/lens_tiles_grid/" + nn).c_str(),
+                                     [n](benchmark::State& s) {
+                                         const render::LensDraw draw = lens_draw(n);
+                                         frustum::TileGrid<float> grid;
+                                         for (auto _ : s) {
+                                             auto status = frustum::lens_tiles(draw.camera, draw.lens, kWidthPx,
+                                                                               kHeightPx, n, n, grid);
+                                             benchmark::DoNotOptimize(status);
+                                             benchmark::ClobberMemory();
+                                         }
+                                     })
+            ->Unit(benchmark::kMicrosecond);
+    }
+    for (int g : {4, 16}) {
+        const std::string gg = std::to_string(g) + "x" + std::to_string(g);
+        benchmark::RegisterBenchmark(("cpu/curved_fits/newton/" + gg).c_str(),
+                                     [g](benchmark::State& s) { curved_fits(s, g, true); })
+            ->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark(("cpu/curved_fits/former_ascent/" + gg).c_str(),
+                                     [g](benchmark::State& s) { curved_fits(s, g, false); })
+            ->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark(("cpu/curved_plan/" + gg).c_str(),
+                                     [g](benchmark::State& s) {
+                                         const auto mirror = render::CurvedMirror::create(
+                                             *showcase().mirror, render::CapShape::Sphere, 0.3);
+                                         const auto eye = frustum::eye_point(main_camera());
+                                         for (auto _ : s) {
+                                             auto plan = render::plan_curved_mirror(*mirror, glm::dvec3(*eye),
+                                                                                    showcase().world_bounds, g);
+                                             benchmark::DoNotOptimize(plan);
                                          }
                                      })
             ->Unit(benchmark::kMicrosecond);

@@ -6,11 +6,16 @@
 // same tiles' matrices and invert each with glm::inverse, as bench_ops does.
 //
 //   count_tiles_driver <op> <G> <repeats>
-//   op: crop_tiles crop_tiles_glm lens_tiles lens_tiles_glm
+//   op: crop_tiles crop_tiles_glm lens_tiles lens_tiles_glm fit_volume
+// fit_volume (G ignored, use 1): one curved-mirror patch fit (paper §4.3,
+// Newton with the analytic Hessian) in double, on a camera's frustum whose
+// side normals are tilted by about 0.6 degrees (a curved patch's target),
+// from the paper's start.
 #include "count_case.hpp"
 #include "reinvert.hpp"
 
 #include <frustum/detail/lens_matrices.hpp>
+#include <frustum/volume_approximation.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -37,7 +42,7 @@ int main(int argc, char** argv) {
     frustum::Lens<float> lens{glm::vec2(0.1f, -0.05f) * frame->half_height_m, 0.6f * frame->half_height_m, 1.5f};
     keep(pair);
     keep(lens);
-    static const char* const ops[] = {"crop_tiles", "crop_tiles_glm", "lens_tiles", "lens_tiles_glm"};
+    static const char* const ops[] = {"crop_tiles", "crop_tiles_glm", "lens_tiles", "lens_tiles_glm", "fit_volume"};
     const int which = bench::op_index(op, ops);
     if (which < 0) {
         std::fprintf(stderr, "count_tiles_driver: unknown op '%s'\n", op);
@@ -82,6 +87,34 @@ int main(int argc, char** argv) {
             keep(inverses);
         });
         break;
+    }
+    if (which == 4) {
+        // The target: an off-axis camera's near corners and side planes, the
+        // normals tilted (fixed offsets, no random state).
+        const auto projection = frustum::off_axis(-0.3, 0.5, -0.2, 0.35, 0.5, std::optional<double>(40.0),
+                                                  frustum::DepthRange::ZeroToOne);
+        const auto view = frustum::look_at(glm::dvec3(1, 2, 5), glm::dvec3(0, 0, 0), glm::dvec3(0, 1, 0));
+        const auto camera = frustum::compose(*projection, *view);
+        const auto p = frustum::planes(camera);
+        const auto k = frustum::key_points(camera);
+        glm::dvec3 c[4];
+        for (int i = 0; i < 4; ++i) c[i] = glm::dvec3(frustum::to_point(k.corners[i], 1e-12));
+        frustum::VolumeTarget<double> target;
+        target.near_points = {c[1], c[0], c[3], c[2]};
+        target.side_normals = {p.top.normal(), p.right.normal(), p.bottom.normal(), p.left.normal()};
+        const glm::dvec3 tilt[4] = {{0.01, -0.004, 0.006}, {-0.007, 0.009, 0.002}, {0.003, 0.008, -0.01},
+                                    {-0.009, -0.002, 0.005}};
+        for (int i = 0; i < 4; ++i) target.side_normals[i] = glm::normalize(target.side_normals[i] + tilt[i]);
+        target.near = p.near;
+        keep(target);
+        int steps = 0;
+        repeat([&] {
+            const auto fit = frustum::fit_volume(target, 30.0, frustum::DepthRange::ZeroToOne);
+            failures += !fit.ok();
+            steps = fit ? fit->iterations : -1;
+            keep(fit);
+        });
+        std::fprintf(stderr, "fit_volume: %d Newton solves\n", steps);
     }
     if (failures != 0) {
         std::fprintf(stderr, "count_tiles_driver: %s refused the case (%d times): not the success path\n", op, failures);
