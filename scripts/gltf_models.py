@@ -14,7 +14,7 @@ triangles and a .glb. What each holds is in tests/data/gltf-models/README.md.
 import math
 import struct
 
-from gltf_writer import (ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, UBYTE, UINT, USHORT, LINE_LOOP, LINE_STRIP, LINES, POINTS, TRIANGLE_FAN,
+from gltf_writer import (ARRAY_BUFFER, BYTE, ELEMENT_ARRAY_BUFFER, FLOAT, SHORT, UBYTE, UINT, USHORT, LINE_LOOP, LINE_STRIP, LINES, POINTS, TRIANGLE_FAN,
                          TRIANGLE_STRIP, TRIANGLES, Gltf, png_rgba)
 
 GENERATOR = "scripts/make_feature_gltf.py (gltf_models)"
@@ -359,6 +359,59 @@ def torus(in_buffer=False):
 def torus_glb():
     return torus(in_buffer=True)
 
+
+def torus_quantized(normalized=True):
+    # torus.gltf with KHR_mesh_quantization, the node "torus" carrying the
+    # dequantization (its translation and uniform scale), as the extension
+    # says. normalized: POSITION normalized SHORT (centre + half extent *
+    # max(q / 32767, -1)), NORMAL normalized BYTE, TEXCOORD_0 normalized UNSIGNED_SHORT.
+    # Else POSITION plain UNSIGNED_SHORT (min + step * q), NORMAL normalized
+    # SHORT, TEXCOORD_0 plain UNSIGNED_BYTE (i, j) scaled by
+    # KHR_texture_transform to (i / 48, j / 32), exactly torus.gltf's uv.
+    # Not committed (tests/data is the committed set): the scene and gl
+    # suites write them at test time (make_feature_gltf.py --quantized DIR).
+    rings, sides = 48, 32
+    g = Gltf(camera=False, generator=GENERATOR)
+    m = g.material((1, 1, 1, 1), name="torus")
+    texture = {"index": g.texture(QUADRANTS_PNG)}
+    pos, nrm, uv, idx = torus_arrays(rings, sides)
+    pos = [100 * c for c in pos]
+    low = [min(pos[i::3]) for i in range(3)]
+    high = [max(pos[i::3]) for i in range(3)]
+    if normalized:
+        centre = [(a + b) / 2 for a, b in zip(low, high)]
+        half = max(b - a for a, b in zip(low, high)) / 2
+        q = [round((c - centre[k % 3]) / half * 32767) for k, c in enumerate(pos)]
+        position = g.accessor(q, "VEC3", SHORT, normalized=True, stride=8, bounds=True)
+        normal = g.accessor([round(c * 127) for c in nrm], "VEC3", BYTE, normalized=True, stride=4)
+        texcoord = g.accessor([round(c * 65535) for c in uv], "VEC2", USHORT, normalized=True)
+        dequantize = {"translation": centre, "scale": [half] * 3}  # the reader maps q to q / 32767
+    else:
+        step = max(b - a for a, b in zip(low, high)) / 65535
+        q = [round((c - low[k % 3]) / step) for k, c in enumerate(pos)]
+        position = g.accessor(q, "VEC3", USHORT, stride=8, bounds=True)
+        normal = g.accessor([round(c * 32767) for c in nrm], "VEC3", SHORT, normalized=True, stride=8)
+        texcoord = g.accessor([round(c * (rings if k % 2 == 0 else sides)) for k, c in enumerate(uv)], "VEC2", UBYTE,
+                              stride=4)
+        texture["extensions"] = {"KHR_texture_transform": {"scale": [1 / rings, 1 / sides]}}
+        dequantize = {"translation": low, "scale": [step] * 3}
+    g.j["materials"][m]["pbrMetallicRoughness"]["baseColorTexture"] = texture
+    prim = {"attributes": {"POSITION": position, "NORMAL": normal, "TEXCOORD_0": texcoord},
+            "indices": g.indices(idx), "material": m}
+    body = g.node(dict({"name": "torus", "mesh": g.mesh([prim], name="torus")}, **dequantize), root=False)
+    g.node({"name": "centimetres", "scale": [0.01, 0.01, 0.01], "children": [body]})
+    used = ["KHR_mesh_quantization"] + ([] if normalized else ["KHR_texture_transform"])
+    g.j["extensionsUsed"] = used
+    g.j["extensionsRequired"] = ["KHR_mesh_quantization"]
+    return g
+
+
+# Written only on request (make_feature_gltf.py --quantized DIR), by the
+# tests that load them next to torus.gltf.
+QUANTIZED_MODELS = {
+    "torus_quantized.gltf": torus_quantized,
+    "torus_quantized_int.gltf": lambda: torus_quantized(normalized=False),
+}
 
 # name -> builder; .glb files are written with Gltf.binary().
 MODELS = {

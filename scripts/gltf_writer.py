@@ -68,13 +68,20 @@ class Gltf:
         self.j["bufferViews"].append(v)
         return len(self.j["bufferViews"]) - 1
 
-    def accessor(self, values, kind, component=FLOAT, normalized=False, target=None, bounds=None):
-        """A tightly packed accessor with its own bufferView. VEC3 float
+    def accessor(self, values, kind, component=FLOAT, normalized=False, target=None, bounds=None, stride=None):
+        """A tightly packed accessor with its own bufferView (or, with
+        `stride`, each element zero-padded to that many bytes, as vertex
+        attributes of 1- and 2-byte components must be). VEC3 float
         accessors get min/max (POSITION needs them); `bounds` forces them
         on (True) or off (False)."""
         size = _SIZE[kind]
-        payload = struct.pack("<%d%s" % (len(values), _FORMAT[component]), *values)
-        acc = {"bufferView": self.view(payload, target=target), "componentType": component,
+        if stride is None:
+            payload = struct.pack("<%d%s" % (len(values), _FORMAT[component]), *values)
+        else:
+            element = struct.Struct("<%d%s" % (size, _FORMAT[component]))
+            payload = b"".join(element.pack(*values[i:i + size]) + b"\x00" * (stride - element.size)
+                               for i in range(0, len(values), size))
+        acc = {"bufferView": self.view(payload, stride=stride, target=target), "componentType": component,
                "count": len(values) // size, "type": kind}
         if normalized:
             acc["normalized"] = True

@@ -8,6 +8,9 @@ packages=(
   libglm-dev            # vector/matrix math for frustum/
   nlohmann-json3-dev    # JSON for frustum-vectors (tinygltf uses it too)
   libtinygltf-dev       # glTF 2.0 loading
+  libdraco-dev          # KHR_draco_mesh_compression: decoding Draco-compressed glTF meshes (app/scene)
+  libmeshoptimizer-dev  # EXT_meshopt_compression: decoding meshopt-compressed glTF bufferViews (app/scene)
+  draco gltfpack        # draco_transcoder, gltfpack: the scene/gl tests compress the generated torus with them
   libstb-dev            # stb_image_write for PNG output
   doctest-dev           # unit tests
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless + GLES 3

@@ -15,6 +15,8 @@ standard library only; the `scene` suite checks them byte for byte):
 - tests/fuzz/corpus/gltf/: the generated fuzz seeds (scripts/gltf_seeds.py).
 
     python3 scripts/make_feature_gltf.py [OUT_ROOT]   # default: the repository
+    python3 scripts/make_feature_gltf.py --quantized DIR   # only the KHR_mesh_quantization
+        # variants of the torus (gltf_models.QUANTIZED_MODELS), into DIR; not committed
 """
 import math
 import os
@@ -145,11 +147,11 @@ def orientation_file():
     return g
 
 
-def draco_file():
+def unsupported_required_file():
     # Valid, but requires an extension the loader does not implement.
     g = orthographic_file()
-    g.j["extensionsUsed"] = ["KHR_draco_mesh_compression", "KHR_materials_unlit"]
-    g.j["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    g.j["extensionsUsed"] = ["KHR_materials_unlit", "KHR_materials_variants"]
+    g.j["extensionsRequired"] = ["KHR_materials_variants"]
     return g
 
 
@@ -162,7 +164,7 @@ FILES = {
     "alpha.gltf": alpha_file,
     "orthographic.gltf": orthographic_file,
     "orientation.gltf": orientation_file,
-    "draco_required.gltf": draco_file,
+    "unsupported_required.gltf": unsupported_required_file,
 }
 
 
@@ -172,6 +174,10 @@ def write(path, content):
 
 
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--quantized":
+        for name, make in gltf_models.QUANTIZED_MODELS.items():
+            write(os.path.join(sys.argv[2], name), make().text())
+        return
     here = os.path.dirname(os.path.abspath(__file__))
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..")
     folders = {"features": os.path.join(root, "tests", "data", "gltf-features"),

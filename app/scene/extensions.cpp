@@ -7,7 +7,7 @@
 namespace scene::detail {
 
 const std::vector<std::string>& supported_extensions() {
-    static const std::vector<std::string> names = {kGpuInstancing, kUnlit, kTextureTransform};
+    static const std::vector<std::string> names = {kGpuInstancing, kMeshopt, kDraco, kUnlit, kMeshQuantization, kTextureTransform};
     return names;
 }
 

@@ -2,6 +2,7 @@
 
 #include "budget_check.hpp"
 #include "build_scene.hpp"
+#include "decompress.hpp"
 #include "fs_sandbox.hpp"
 #include "glb_check.hpp"
 #include "json_depth.hpp"
@@ -101,6 +102,9 @@ frustum::Result<Scene> load_gltf(const std::string& path, const LoadOptions& opt
         *bytes, is_glb, *facts, *sandbox, options.max_image_pixels, options.budget);
     if (!model) {
         return fail(model.error());
+    }
+    if (Status decoded = detail::decompress(*model, options.budget); !decoded) {
+        return fail(decoded.error());
     }
     if (Status valid = detail::validate_model(*model); !valid) {
         return fail(valid.error());

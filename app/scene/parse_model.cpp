@@ -3,10 +3,12 @@
 #include "foreign_message.hpp"
 #include "budget_check.hpp"
 #include "glb_check.hpp"
+#include "extensions.hpp"
 #include "image_decode.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <map>
 #include <set>
@@ -80,13 +82,81 @@ bool load_image(tinygltf::Image* image, const int image_index, std::string* err,
     return true;
 }
 
-std::string json_without_skins_and_animations(const char* text, std::size_t size_bytes) {
+// An EXT_meshopt_compression "fallback" buffer: no bytes in the file (no uri,
+// and not the GLB's BIN chunk), only what the compressed bufferViews decode to.
+struct FallbackBuffer {
+    std::size_t index = 0;
+    std::uint64_t byte_length = 0;
+};
+
+bool is_meshopt_fallback(const nlohmann::json& buffer) {
+    if (!buffer.is_object() || buffer.contains("uri")) return false;
+    const auto extensions = buffer.find("extensions");
+    if (extensions == buffer.end() || !extensions->is_object()) return false;
+    const auto meshopt = extensions->find(kMeshopt);
+    return meshopt != extensions->end() && meshopt->is_object() && meshopt->value("fallback", false) == true;
+}
+
+// tinygltf 2.7 requires the indices accessor of every primitive to have a
+// bufferView; a Draco primitive's has none (its indices are in the
+// compressed data). It is given the extension's bufferView, which
+// decode_draco() replaces with the decoded indices.
+void point_draco_indices_at_their_data(nlohmann::json& root) {
+    auto meshes = root.find("meshes");
+    auto accessors = root.find("accessors");
+    if (meshes == root.end() || !meshes->is_array() || accessors == root.end() || !accessors->is_array()) return;
+    for (nlohmann::json& mesh : *meshes) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+        for (nlohmann::json& primitive : mesh["primitives"]) {
+            if (!primitive.is_object()) continue;
+            const nlohmann::json* draco = nullptr;
+            if (auto ext = primitive.find("extensions"); ext != primitive.end() && ext->is_object()) {
+                if (auto found = ext->find(kDraco); found != ext->end() && found->is_object()) draco = &*found;
+            }
+            const auto indices = primitive.find("indices");
+            if (draco == nullptr || indices == primitive.end() || !indices->is_number_unsigned() ||
+                !draco->contains("bufferView") || !(*draco)["bufferView"].is_number_unsigned()) {
+                continue;
+            }
+            const std::uint64_t index = indices->get<std::uint64_t>();
+            if (index < accessors->size() && (*accessors)[index].is_object() &&
+                !(*accessors)[index].contains("bufferView")) {
+                (*accessors)[index]["bufferView"] = (*draco)["bufferView"];
+            }
+        }
+    }
+}
+
+// The JSON as tinygltf 2.7 accepts it: without skins and animations (when
+// asked), and each meshopt fallback buffer given a 3-byte data uri in place
+// of the bytes it does not have (tinygltf requires a uri, or would copy the
+// BIN chunk); `fallbacks` gets their declared byteLength; Draco indices
+// accessors given a bufferView.
+std::string json_for_tinygltf(const char* text, std::size_t size_bytes, bool strip_skins_and_animations,
+                              bool is_glb, std::vector<FallbackBuffer>& fallbacks) {
     const nlohmann::json::parser_callback_t drop =
-        [](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-            return !(depth == 1 && event == nlohmann::json::parse_event_t::key &&
+        [strip_skins_and_animations](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+            return !(strip_skins_and_animations && depth == 1 && event == nlohmann::json::parse_event_t::key &&
                      (parsed == "skins" || parsed == "animations"));
         };
-    return nlohmann::json::parse(text, text + size_bytes, drop).dump(); // valid: checked before
+    nlohmann::json root = nlohmann::json::parse(text, text + size_bytes, drop); // valid: checked before
+    auto buffers = root.find("buffers");
+    if (buffers != root.end() && buffers->is_array()) {
+        for (std::size_t i = is_glb ? 1 : 0; i < buffers->size(); ++i) {
+            nlohmann::json& buffer = (*buffers)[i];
+            const auto length = buffer.find("byteLength");
+            if (!is_meshopt_fallback(buffer) || length == buffer.end() || !length->is_number_unsigned()) continue;
+            fallbacks.push_back({i, length->get<std::uint64_t>()});
+            buffer["uri"] = "data:application/octet-stream;base64,AAAA";
+            buffer["byteLength"] = 3;
+        }
+    }
+    point_draco_indices_at_their_data(root);
+    return root.dump();
+}
+
+bool mentions(const std::vector<unsigned char>& bytes, const std::string& word) {
+    return std::search(bytes.begin(), bytes.end(), word.begin(), word.end()) != bytes.end();
 }
 
 // The file with its JSON replaced by `json` (for a GLB: the JSON chunk,
@@ -129,17 +199,19 @@ frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& f
 
     std::string error, warning;
     bool parsed = false;
+    std::vector<FallbackBuffer> fallbacks;
     try {
         std::vector<unsigned char> stripped;
-        if (facts.strip_skins_and_animations) {
+        if (facts.strip_skins_and_animations || mentions(file_bytes, kMeshopt) || mentions(file_bytes, kDraco)) {
             std::size_t json_offset = 0, json_bytes = file_bytes.size();
             if (is_glb) {
                 const GlbJson json = *check_glb(file_bytes.data(), file_bytes.size());
                 json_offset = json.offset;
                 json_bytes = json.size_bytes;
             }
-            stripped = with_json(file_bytes, is_glb, json_without_skins_and_animations(
-                reinterpret_cast<const char*>(file_bytes.data()) + json_offset, json_bytes));
+            stripped = with_json(file_bytes, is_glb,
+                                 json_for_tinygltf(reinterpret_cast<const char*>(file_bytes.data()) + json_offset,
+                                                   json_bytes, facts.strip_skins_and_animations, is_glb, fallbacks));
         }
         const std::vector<unsigned char>& input = stripped.empty() ? file_bytes : stripped;
         const auto size = static_cast<unsigned int>(input.size()); // < 4 GiB: checked by caller
@@ -166,6 +238,18 @@ frustum::Result<tinygltf::Model> parse_model(const std::vector<unsigned char>& f
             message += " (" + sandbox.first_refusal() + ")";
         }
         return frustum::Error{message};
+    }
+    // The fallback buffers' zeros, which decompress() overwrites.
+    std::uint64_t fallback_bytes = 0;
+    for (const FallbackBuffer& fallback : fallbacks) {
+        fallback_bytes += fallback.byte_length > budget.max_decoded_bytes ? budget.max_decoded_bytes + 1
+                                                                          : fallback.byte_length;
+        if (fallback_bytes > budget.max_decoded_bytes) {
+            return frustum::Error{std::string(kMeshopt) + " fallback buffer " + std::to_string(fallback.index) +
+                                  " has byteLength " + std::to_string(fallback.byte_length) +
+                                  "; the fallback buffers' bytes " + over_memory_budget(budget)};
+        }
+        model.buffers[fallback.index].data.assign(fallback.byte_length, 0);
     }
     const std::set<int> drawn = texture_sources(model);
     for (const auto& [index, message] : images.undecoded) {

@@ -1,6 +1,9 @@
 #include "accessor_info.hpp"
+#include "extensions.hpp"
 #include "validate.hpp"
 
+#include <algorithm>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,8 @@ using frustum::Error;
 using frustum::Status;
 
 constexpr int FLOAT = TINYGLTF_COMPONENT_TYPE_FLOAT;
+constexpr int BYTE = TINYGLTF_COMPONENT_TYPE_BYTE;
+constexpr int SHORT = TINYGLTF_COMPONENT_TYPE_SHORT;
 constexpr int UBYTE = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
 constexpr int USHORT = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 constexpr int UINT = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
@@ -28,19 +33,40 @@ struct AttributeRule {
     bool indexed;
     std::vector<Format> formats;
     const char* allowed; // the same list, for messages
+    // KHR_mesh_quantization's further formats (when the file uses it).
+    std::vector<Format> quantized = {};
+    const char* allowed_quantized = nullptr;
 };
+
+// Every integer component type of `types`, normalized and not, as `type`.
+std::vector<Format> integer_formats(int type, std::initializer_list<int> types, bool plain, bool normalized) {
+    std::vector<Format> formats;
+    for (int component_type : types) {
+        if (plain) formats.push_back({type, component_type, false});
+        if (normalized) formats.push_back({type, component_type, true});
+    }
+    return formats;
+}
 
 // glTF 2.0 spec, "Meshes > Overview" attribute table.
 const std::vector<AttributeRule>& attribute_rules() {
     static const std::vector<AttributeRule> rules = {
-        {"POSITION", false, {{TINYGLTF_TYPE_VEC3, FLOAT, false}}, "VEC3 FLOAT"},
-        {"NORMAL", false, {{TINYGLTF_TYPE_VEC3, FLOAT, false}}, "VEC3 FLOAT"},
-        {"TANGENT", false, {{TINYGLTF_TYPE_VEC4, FLOAT, false}}, "VEC4 FLOAT"},
+        {"POSITION", false, {{TINYGLTF_TYPE_VEC3, FLOAT, false}}, "VEC3 FLOAT",
+         integer_formats(TINYGLTF_TYPE_VEC3, {BYTE, UBYTE, SHORT, USHORT}, true, true),
+         "VEC3 of FLOAT or (normalized or not) BYTE/UNSIGNED_BYTE/SHORT/UNSIGNED_SHORT"},
+        {"NORMAL", false, {{TINYGLTF_TYPE_VEC3, FLOAT, false}}, "VEC3 FLOAT",
+         integer_formats(TINYGLTF_TYPE_VEC3, {BYTE, SHORT}, false, true),
+         "VEC3 of FLOAT or normalized BYTE/SHORT"},
+        {"TANGENT", false, {{TINYGLTF_TYPE_VEC4, FLOAT, false}}, "VEC4 FLOAT",
+         integer_formats(TINYGLTF_TYPE_VEC4, {BYTE, SHORT}, false, true),
+         "VEC4 of FLOAT or normalized BYTE/SHORT"},
         {"TEXCOORD_", true,
          {{TINYGLTF_TYPE_VEC2, FLOAT, false},
           {TINYGLTF_TYPE_VEC2, UBYTE, true},
           {TINYGLTF_TYPE_VEC2, USHORT, true}},
-         "VEC2 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT"},
+         "VEC2 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT",
+         integer_formats(TINYGLTF_TYPE_VEC2, {BYTE, UBYTE, SHORT, USHORT}, true, true),
+         "VEC2 of FLOAT or (normalized or not) BYTE/UNSIGNED_BYTE/SHORT/UNSIGNED_SHORT"},
         {"COLOR_", true,
          {{TINYGLTF_TYPE_VEC3, FLOAT, false},
           {TINYGLTF_TYPE_VEC3, UBYTE, true},
@@ -80,6 +106,11 @@ std::string accessor_in_range(const tinygltf::Model& model, int accessor) {
            std::to_string(model.accessors.size()) + " accessors";
 }
 
+bool uses_quantization(const tinygltf::Model& model) {
+    return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), kMeshQuantization) !=
+           model.extensionsUsed.end();
+}
+
 Status validate_attribute(const tinygltf::Model& model, const std::string& where,
                           const std::string& semantic, int index, std::size_t vertex_count) {
     const std::string label = semantic + " of " + where;
@@ -88,17 +119,22 @@ Status validate_attribute(const tinygltf::Model& model, const std::string& where
     }
     const tinygltf::Accessor& accessor = model.accessors[index];
     if (const AttributeRule* rule = rule_for(semantic)) {
+        const bool quantized = rule->allowed_quantized != nullptr && uses_quantization(model);
         bool allowed = false;
-        for (const Format& format : rule->formats) {
-            allowed = allowed || (format.type == accessor.type &&
-                                  format.component_type == accessor.componentType &&
-                                  format.normalized == accessor.normalized);
+        for (const std::vector<Format>* formats : {&rule->formats, quantized ? &rule->quantized : nullptr}) {
+            for (std::size_t f = 0; formats != nullptr && f < formats->size(); ++f) {
+                const Format& format = (*formats)[f];
+                allowed = allowed || (format.type == accessor.type &&
+                                      format.component_type == accessor.componentType &&
+                                      format.normalized == accessor.normalized);
+            }
         }
         if (!allowed) {
             return Error{label + " (accessor " + std::to_string(index) + ") is " +
                          type_name(accessor.type) + " with componentType " +
                          component_type_name(accessor.componentType) +
-                         (accessor.normalized ? " normalized" : "") + "; allowed: " + rule->allowed};
+                         (accessor.normalized ? " normalized" : "") + "; allowed: " +
+                         (quantized ? rule->allowed_quantized : rule->allowed)};
         }
     }
     if (accessor.count != vertex_count) {

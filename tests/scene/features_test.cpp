@@ -168,11 +168,12 @@ TEST_CASE("alphaMode and alphaCutoff are read (MASK's cutoff defaults to 0.5)") 
 }
 
 TEST_CASE("a required extension that is not supported is refused by name before parsing") {
-    auto loaded = scene::load_gltf(feature_path("draco_required.gltf"));
+    auto loaded = scene::load_gltf(feature_path("unsupported_required.gltf"));
     REQUIRE_FALSE(loaded.ok());
-    CHECK(loaded.error() == "scene::load_gltf(): " + feature_path("draco_required.gltf") +
-                                ": the file requires glTF extension KHR_draco_mesh_compression, which is not "
-                                "supported (supported: EXT_mesh_gpu_instancing, KHR_materials_unlit, "
+    CHECK(loaded.error() == "scene::load_gltf(): " + feature_path("unsupported_required.gltf") +
+                                ": the file requires glTF extension KHR_materials_variants, which is not "
+                                "supported (supported: EXT_mesh_gpu_instancing, EXT_meshopt_compression, "
+                                "KHR_draco_mesh_compression, KHR_materials_unlit, KHR_mesh_quantization, "
                                 "KHR_texture_transform)");
 }
 

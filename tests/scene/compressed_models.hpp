@@ -1,0 +1,111 @@
+// Quantized and compressed variants of the generated torus
+// (tests/data/gltf-models/torus.gltf), written at test time into a folder:
+// the KHR_mesh_quantization ones by scripts/make_feature_gltf.py
+// --quantized, the others by Debian's tools (gltfpack for
+// EXT_meshopt_compression, draco_transcoder for KHR_draco_mesh_compression).
+// Nothing third-party is committed. Header-only: the scene and gl suites
+// both use it. Test-only code.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace compressed_models {
+
+struct Variant {
+    const char* file;      // written into the folder
+    const char* tool;      // what must be installed to write it
+    const char* extension; // what it exercises
+};
+
+inline const std::vector<Variant>& variants() {
+    static const std::vector<Variant> list = {
+        {"torus_quantized.gltf", "python3", "KHR_mesh_quantization (normalized SHORT/BYTE/UNSIGNED_SHORT)"},
+        {"torus_quantized_int.gltf", "python3", "KHR_mesh_quantization (plain UNSIGNED_SHORT/UNSIGNED_BYTE)"},
+        {"torus_gltfpack.gltf", "gltfpack", "KHR_mesh_quantization as gltfpack writes it"},
+        {"torus_meshopt.gltf", "gltfpack", "EXT_meshopt_compression + KHR_mesh_quantization"},
+        {"torus_meshopt.glb", "gltfpack", "EXT_meshopt_compression in a .glb"},
+        {"torus_meshopt_float.gltf", "gltfpack", "EXT_meshopt_compression of float attributes"},
+        {"torus_draco.gltf", "draco_transcoder", "KHR_draco_mesh_compression"},
+    };
+    return list;
+}
+
+inline std::string torus_path() { return std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/torus.gltf"; }
+
+inline bool installed(const std::string& tool) {
+    return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+inline bool run(const std::string& command) { return std::system((command + " > /dev/null 2>&1").c_str()) == 0; }
+
+inline nlohmann::json read_json(const std::filesystem::path& path) {
+    std::ifstream file(path);
+    return nlohmann::json::parse(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+inline void write_json(const std::filesystem::path& path, const nlohmann::json& json) {
+    std::ofstream(path) << json.dump();
+}
+
+// draco_transcoder 1.5.5 refuses the torus's data-uri texture ("Invalid
+// source data for the texture"): it transcodes the torus without it, and the
+// material, texture, image and sampler are put back after.
+inline bool make_draco(const std::filesystem::path& dir, const std::string& file) {
+    const nlohmann::json torus = read_json(torus_path());
+    nlohmann::json bare = torus;
+    for (const char* key : {"images", "textures", "samplers"}) bare.erase(key);
+    bare["materials"][0]["pbrMetallicRoughness"].erase("baseColorTexture");
+    write_json(dir / "torus_untextured.gltf", bare);
+    if (!run("draco_transcoder -i " + (dir / "torus_untextured.gltf").string() + " -o " + (dir / file).string())) {
+        return false;
+    }
+    nlohmann::json draco = read_json(dir / file);
+    for (const char* key : {"materials", "images", "textures", "samplers"}) {
+        if (torus.contains(key)) draco[key] = torus[key];
+    }
+    write_json(dir / file, draco);
+    return true;
+}
+
+// Writes `variant` into `dir` (with its .bin when the tool writes one).
+// Absent: its tool is not installed (`missing` says which) or failed
+// (`missing` empty: a failure of the test, not a skip).
+inline std::optional<std::filesystem::path> make(const Variant& variant, const std::filesystem::path& dir,
+                                                 std::string& missing) {
+    missing.clear();
+    if (!installed(variant.tool)) {
+        missing = std::string(variant.tool) + " is not installed (scripts/install-deps.sh)";
+        return std::nullopt;
+    }
+    const std::string file = variant.file;
+    const std::filesystem::path out = dir / file;
+    const std::string gltfpack = "gltfpack -i " + torus_path() + " -o " + out.string();
+    bool made = false;
+    if (file == "torus_quantized.gltf" || file == "torus_quantized_int.gltf") {
+        made = std::filesystem::exists(out) ||
+               run("python3 " + std::string(FRUSTUM_SOURCE_DIR) + "/scripts/make_feature_gltf.py --quantized " +
+                   dir.string());
+    } else if (file == "torus_gltfpack.gltf") {
+        made = run(gltfpack);
+    } else if (file == "torus_meshopt.gltf" || file == "torus_meshopt.glb") {
+        made = run(gltfpack + " -c");
+    } else if (file == "torus_meshopt_float.gltf") {
+        made = run(gltfpack + " -c -noq");
+    } else if (file == "torus_draco.gltf") {
+        made = make_draco(dir, file);
+    }
+    if (!made || !std::filesystem::exists(out)) {
+        return std::nullopt;
+    }
+    return out;
+}
+
+} // namespace compressed_models
