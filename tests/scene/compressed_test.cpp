@@ -12,7 +12,9 @@
 
 #include <scene/load_gltf.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -97,6 +99,95 @@ TEST_CASE("the comparison sees a moved vertex and a flipped winding") {
     std::swap(indices[0], indices[1]);
     CHECK(scene_test::compare_triangles(original, flipped, 1e-3f).unmatched == 1);
     CHECK(scene_test::compare_triangles(original, original, 0.0f).unmatched == 0);
+}
+
+TEST_CASE("hostile compressed data is refused in one line naming what is wrong") {
+    // Each case: a variant written by its tool, then changed.
+    struct Hostile {
+        const char* name;
+        const char* variant;
+        void (*change)(scene_test::Json& gltf, const std::filesystem::path& dir);
+        const char* phrase;
+    };
+    using scene_test::Json;
+    namespace fs = std::filesystem;
+    static const Hostile cases[] = {
+        {"meshopt: stream cut short", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 100; },
+         "bufferView 1 EXT_meshopt_compression: the ATTRIBUTES data (100 bytes) does not decode to 1617 elements"},
+        {"meshopt: count larger than the stream holds", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["count"] = 1000; },
+         "does not decode to 1000 elements"},
+        {"meshopt: count * byteStride past the bufferView", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["count"] = 3000000; },
+         "decodes 3000000 x 4 bytes but the bufferView has 6468 bytes"},
+        {"meshopt: source range past its buffer", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["byteOffset"] = 1u << 30; },
+         "bufferView 1 EXT_meshopt_compression reads bytes [1073741824, "},
+        {"meshopt: unknown mode", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["mode"] = "POINTS"; },
+         "has mode \"POINTS\", expected ATTRIBUTES, TRIANGLES or INDICES"},
+        {"meshopt: TRIANGLES count not a multiple of 3", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][4]["extensions"]["EXT_meshopt_compression"]["count"] = 9215; },
+         "has count 9215 for mode TRIANGLES, expected a multiple of 3"},
+        {"meshopt: absurd fallback buffer", "torus_meshopt.gltf",
+         [](Json& g, const fs::path&) { g["buffers"][1]["byteLength"] = 1ull << 40; },
+         "EXT_meshopt_compression fallback buffer 1 has byteLength 1099511627776; the fallback buffers' bytes is over "
+         "the budget of 256 MiB (raise it with --max-memory-mb)"},
+        {"draco: stream cut short", "torus_draco.gltf",
+         [](Json& g, const fs::path&) { g["bufferViews"][0]["byteLength"] = 200; },
+         "mesh 0 primitive 0 KHR_draco_mesh_compression: the Draco data (bufferView 0, 200 bytes) does not decode"},
+        {"draco: indices count disagrees", "torus_draco.gltf",
+         [](Json& g, const fs::path&) { g["accessors"][0]["count"] = 9213; },
+         "decodes to 9216 indices but its indices accessor 0 has count 9213"},
+        {"draco: point count disagrees", "torus_draco.gltf",
+         [](Json& g, const fs::path&) { g["accessors"][1]["count"] = 1616; },
+         "decodes to 1617 points but POSITION (accessor 1) has count 1616"},
+        {"draco: absurd accessor count", "torus_draco.gltf",
+         [](Json& g, const fs::path&) { g["accessors"][1]["count"] = 4000000000u; },
+         "bytes by its accessors' counts, over the memory budget left (268435456 bytes; raise it with --max-memory-mb)"},
+        {"draco: attribute id the data lacks", "torus_draco.gltf",
+         [](Json& g, const fs::path&) {
+             g["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["POSITION"] = 7;
+         },
+         "maps POSITION to Draco attribute 7, which the decoded data does not have"},
+        {"draco: bufferView out of range", "torus_draco.gltf",
+         [](Json& g, const fs::path&) {
+             g["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = 9;
+         },
+         "tinygltf: accessor[0] invalid bufferView"}, // the indices get the extension's bufferView (parse_model.cpp)
+        {"quantized: a format the extension does not allow", "torus_quantized.gltf",
+         [](Json& g, const fs::path&) { g["accessors"][g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"].get<int>()]["componentType"] = 5121; },
+         "allowed: VEC3 of FLOAT or normalized BYTE/SHORT"},
+        {"quantized: integer POSITION without the extension", "torus_quantized.gltf",
+         [](Json& g, const fs::path&) { g.erase("extensionsUsed"); g.erase("extensionsRequired"); },
+         "NORMAL of mesh 0 primitive 0 (accessor 1) is VEC3 with componentType 5120 (BYTE) normalized; allowed: VEC3 FLOAT"},
+    };
+    scene_test::TempDir dir;
+    for (const Hostile& c : cases) {
+        const std::string name = c.name;
+        CAPTURE(name);
+        const auto variant = std::find_if(compressed_models::variants().begin(), compressed_models::variants().end(),
+                                          [&](const compressed_models::Variant& v) { return std::string(v.file) == c.variant; });
+        REQUIRE(variant != compressed_models::variants().end());
+        std::string missing;
+        const auto path = compressed_models::make(*variant, dir.path(), missing);
+        if (!path) {
+            REQUIRE_MESSAGE(!missing.empty(), variant->tool << " failed to write " << c.variant);
+            test_skips::skip(name + ": " + missing);
+            continue;
+        }
+        Json gltf = scene_test::read_json(*path);
+        c.change(gltf, dir.path());
+        const fs::path changed = dir.path() / ("changed-" + std::string(c.variant));
+        scene_test::write_text(changed, gltf.dump());
+        const auto loaded = scene::load_gltf(changed.string());
+        REQUIRE_FALSE(loaded.ok());
+        const std::string& error = loaded.error();
+        CAPTURE(error);
+        CHECK(error.find('\n') == std::string::npos);
+        CHECK(error.find(c.phrase) != std::string::npos);
+    }
 }
 
 } // TEST_SUITE
