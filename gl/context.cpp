@@ -38,6 +38,10 @@ std::string_view to_string(Api api) {
     return api == Api::Gles ? "OpenGL ES" : "OpenGL core";
 }
 
+std::string to_string(const Version& version) {
+    return std::to_string(version.major) + "." + std::to_string(version.minor);
+}
+
 frustum::Status check_requested_version(Api api, const Version& version, const char* where) {
     const bool es = api == Api::Gles;
     const Version lowest = es ? Version{3, 0} : Version{3, 2};
@@ -45,7 +49,7 @@ frustum::Status check_requested_version(Api api, const Version& version, const c
         return {};
     }
     return frustum::Error{std::string(where) + (es ? ": gles_version must be >= 3.0, got " : ": gl_version must be >= 3.2 (core profile), got ") +
-                          std::to_string(version.major) + "." + std::to_string(version.minor)};
+                          to_string(version)};
 }
 
 bool contains_token(std::string_view list, std::string_view token) {
@@ -77,7 +81,21 @@ bool Context::has_extension(std::string_view name) const {
     return contains_token(info_.extensions, name);
 }
 
+frustum::Result<std::vector<Version>> Context::versions_to_try(Api api, const std::optional<Version>& requested,
+                                                              std::vector<Version> highest_first, const char* where) {
+    if (!requested) {
+        return highest_first;
+    }
+    if (auto checked = check_requested_version(api, *requested, where); !checked) {
+        return checked.take_error();
+    }
+    return std::vector<Version>{*requested};
+}
+
 frustum::Status Context::initialize(Api api, const char* where) {
+    if (auto current = make_current(); !current) {
+        return current;
+    }
     const auto get_string = reinterpret_cast<PFNGLGETSTRINGPROC>(get_proc_address("glGetString"));
     const auto get_stringi = reinterpret_cast<PFNGLGETSTRINGIPROC>(get_proc_address("glGetStringi"));
     const auto get_integerv =

@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace gl {
 
@@ -37,6 +38,9 @@ struct Version {
     int major = 0;
     int minor = 0;
 };
+
+// "3.2", as messages write a version.
+std::string to_string(const Version& version);
 
 // Receives one line per KHR_debug message; called on the GL thread.
 using DebugSink = std::function<void(std::string_view)>;
@@ -99,8 +103,13 @@ public:
 
 protected:
     explicit Context(ContextOptions options) : options_(std::move(options)) {}
-    // Backends call this once the new context is current: reads ContextInfo
-    // and, with options().debug, installs the debug message callback.
+    // The versions a backend's create() tries, in order: `requested` alone
+    // when set (checked by check_requested_version()), else `highest_first`.
+    static frustum::Result<std::vector<Version>> versions_to_try(Api api, const std::optional<Version>& requested,
+                                                                 std::vector<Version> highest_first, const char* where);
+    // The end of every backend's create(), once the native context exists:
+    // makes it current, reads ContextInfo and, with options().debug,
+    // installs the debug message callback.
     frustum::Status initialize(Api api, const char* where);
 
 private:

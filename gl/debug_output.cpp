@@ -1,5 +1,6 @@
 #include "gl/debug_output.hpp"
 
+#include "gl/enum_name.hpp"
 #include "gl/gl_api.hpp"
 
 #include <cstring>
@@ -8,29 +9,20 @@
 namespace gl {
 namespace {
 
-struct EnumName {
-    GLenum value;
-    const char* name;
-};
-
 template <std::size_t N>
-const char* lookup(const EnumName (&table)[N], GLenum value) {
-    for (const EnumName& entry : table) {
-        if (entry.value == value) {
-            return entry.name;
-        }
-    }
-    return "other";
+const char* lookup(const EnumName<GLenum> (&table)[N], GLenum value) {
+    const char* name = find_enum_name(table, value);
+    return name != nullptr ? name : "other";
 }
 
-constexpr EnumName kSources[] = {
+constexpr EnumName<GLenum> kSources[] = {
     {GL_DEBUG_SOURCE_API, "api"},
     {GL_DEBUG_SOURCE_WINDOW_SYSTEM, "window system"},
     {GL_DEBUG_SOURCE_SHADER_COMPILER, "shader compiler"},
     {GL_DEBUG_SOURCE_THIRD_PARTY, "third party"},
     {GL_DEBUG_SOURCE_APPLICATION, "application"},
 };
-constexpr EnumName kTypes[] = {
+constexpr EnumName<GLenum> kTypes[] = {
     {GL_DEBUG_TYPE_ERROR, "error"},
     {GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR, "deprecated"},
     {GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR, "undefined behaviour"},
@@ -40,7 +32,7 @@ constexpr EnumName kTypes[] = {
     {GL_DEBUG_TYPE_PUSH_GROUP, "push group"},
     {GL_DEBUG_TYPE_POP_GROUP, "pop group"},
 };
-constexpr EnumName kSeverities[] = {
+constexpr EnumName<GLenum> kSeverities[] = {
     {GL_DEBUG_SEVERITY_HIGH, "high"},
     {GL_DEBUG_SEVERITY_MEDIUM, "medium"},
     {GL_DEBUG_SEVERITY_LOW, "low"},

@@ -1,5 +1,7 @@
 #include "gl/egl_surfaceless_context.hpp"
 
+#include "gl/enum_name.hpp"
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -13,11 +15,7 @@ namespace {
 constexpr const char* kCreate = "gl::EglSurfacelessContext::create()";
 
 std::string egl_error_name(EGLint error) {
-    struct Entry {
-        EGLint value;
-        const char* name;
-    };
-    static constexpr Entry kNames[] = {
+    static constexpr EnumName<EGLint> kNames[] = {
         {EGL_SUCCESS, "EGL_SUCCESS"},
         {EGL_NOT_INITIALIZED, "EGL_NOT_INITIALIZED"},
         {EGL_BAD_ACCESS, "EGL_BAD_ACCESS"},
@@ -34,10 +32,8 @@ std::string egl_error_name(EGLint error) {
         {EGL_BAD_SURFACE, "EGL_BAD_SURFACE"},
         {EGL_CONTEXT_LOST, "EGL_CONTEXT_LOST"},
     };
-    for (const Entry& entry : kNames) {
-        if (entry.value == error) {
-            return entry.name;
-        }
+    if (const char* name = find_enum_name(kNames, error)) {
+        return name;
     }
     return "EGL error " + std::to_string(error);
 }
@@ -105,12 +101,9 @@ EglSurfacelessContext::~EglSurfacelessContext() {
 
 frustum::Result<std::unique_ptr<Context>> EglSurfacelessContext::create(
     const ContextOptions& options) {
-    std::vector<Version> versions = {{3, 2}, {3, 1}, {3, 0}};
-    if (options.gles_version) {
-        if (auto checked = check_requested_version(Api::Gles, *options.gles_version, kCreate); !checked) {
-            return checked.take_error();
-        }
-        versions = {*options.gles_version};
+    auto versions = versions_to_try(Api::Gles, options.gles_version, {{3, 2}, {3, 1}, {3, 0}}, kCreate);
+    if (!versions) {
+        return versions.take_error();
     }
     if (!process_display()) {
         return frustum::Error{process_display().error()};
@@ -138,7 +131,7 @@ frustum::Result<std::unique_ptr<Context>> EglSurfacelessContext::create(
         return frustum::Error{std::string(kCreate) + ": no EGLConfig renders OpenGL ES 3"};
     }
     std::string failures;
-    for (const Version& v : versions) {
+    for (const Version& v : *versions) {
         const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, v.major,
                                      EGL_CONTEXT_MINOR_VERSION, v.minor,
                                      EGL_CONTEXT_OPENGL_DEBUG, options.debug ? EGL_TRUE : EGL_FALSE,
@@ -147,15 +140,11 @@ frustum::Result<std::unique_ptr<Context>> EglSurfacelessContext::create(
         if (self->context_ != EGL_NO_CONTEXT) {
             break;
         }
-        failures += (failures.empty() ? "" : ", ") + std::to_string(v.major) + "." +
-                    std::to_string(v.minor) + ": " + egl_error_name(eglGetError());
+        failures += (failures.empty() ? "" : ", ") + to_string(v) + ": " + egl_error_name(eglGetError());
     }
     if (self->context_ == EGL_NO_CONTEXT) {
         return frustum::Error{std::string(kCreate) + ": no OpenGL ES 3.x context, eglCreateContext failed for " +
                               failures};
-    }
-    if (auto current = self->make_current(); !current) {
-        return frustum::Error{current.error()};
     }
     if (auto ready = self->initialize(Api::Gles, kCreate); !ready) {
         return frustum::Error{ready.error()};

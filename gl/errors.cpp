@@ -1,28 +1,23 @@
 #include "gl/errors.hpp"
 
+#include "gl/enum_name.hpp"
+
 #include <cstdio>
 
 namespace gl {
 namespace {
 
-struct EnumName {
-    GLenum value;
-    const char* name;
-};
-
 template <std::size_t N>
-std::string lookup(const EnumName (&table)[N], GLenum value) {
-    for (const EnumName& entry : table) {
-        if (entry.value == value) {
-            return entry.name;
-        }
+std::string lookup(const EnumName<GLenum> (&table)[N], GLenum value) {
+    if (const char* name = find_enum_name(table, value)) {
+        return name;
     }
     char hex[16];
     std::snprintf(hex, sizeof hex, "0x%04X", value);
     return hex;
 }
 
-constexpr EnumName kErrors[] = {
+constexpr EnumName<GLenum> kErrors[] = {
     {GL_NO_ERROR, "GL_NO_ERROR"},
     {GL_INVALID_ENUM, "GL_INVALID_ENUM"},
     {GL_INVALID_VALUE, "GL_INVALID_VALUE"},
@@ -34,7 +29,7 @@ constexpr EnumName kErrors[] = {
     {GL_CONTEXT_LOST, "GL_CONTEXT_LOST"},
 };
 
-constexpr EnumName kFramebufferStatuses[] = {
+constexpr EnumName<GLenum> kFramebufferStatuses[] = {
     {GL_FRAMEBUFFER_COMPLETE, "GL_FRAMEBUFFER_COMPLETE"},
     {GL_FRAMEBUFFER_UNDEFINED, "GL_FRAMEBUFFER_UNDEFINED"},
     {GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"},

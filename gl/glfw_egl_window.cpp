@@ -121,8 +121,7 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
     // Core 4.3: "#version 300 es" through ARB_ES3_compatibility (the OSMesa backend's lowest too).
     const Version version = es ? options.context.gles_version.value_or(Version{3, 0})
                                : options.context.gl_version.value_or(Version{4, 3});
-    const std::string api_version = std::string(to_string(options.api)) + " " + std::to_string(version.major) +
-                                    "." + std::to_string(version.minor);
+    const std::string api_version = std::string(to_string(options.api)) + " " + to_string(version);
     if (auto checked = check_requested_version(options.api, version, kCreate); !checked) {
         return checked.take_error();
     }
@@ -164,13 +163,10 @@ frustum::Result<std::unique_ptr<GlfwEglWindow>> GlfwEglWindow::create(const Wind
     glfwSetCursorPosCallback(window, GlfwCallbacks::cursor);
     glfwSetScrollCallback(window, GlfwCallbacks::scroll);
     glfwSetFramebufferSizeCallback(window, GlfwCallbacks::framebuffer_size);
-    if (auto current = self->make_current(); !current) {
-        return frustum::Error{current.error()};
-    }
-    glfwSwapInterval(options.vsync ? 1 : 0);
     if (auto ready = self->initialize(options.api, kCreate); !ready) {
         return frustum::Error{ready.error()};
     }
+    glfwSwapInterval(options.vsync ? 1 : 0);
     return {std::move(self)};
 }
 

@@ -75,12 +75,9 @@ OsMesaContext::~OsMesaContext() {
 }
 
 frustum::Result<std::unique_ptr<Context>> OsMesaContext::create(const ContextOptions& options) {
-    std::vector<Version> versions = {{4, 6}, {4, 5}, {4, 4}, {4, 3}};
-    if (options.gl_version) {
-        if (auto checked = check_requested_version(Api::GlCore, *options.gl_version, kCreate); !checked) {
-            return checked.take_error();
-        }
-        versions = {*options.gl_version};
+    auto versions = versions_to_try(Api::GlCore, options.gl_version, {{4, 6}, {4, 5}, {4, 4}, {4, 3}}, kCreate);
+    if (!versions) {
+        return versions.take_error();
     }
     if (!osmesa_api()) {
         return frustum::Error{osmesa_api().error()};
@@ -88,7 +85,7 @@ frustum::Result<std::unique_ptr<Context>> OsMesaContext::create(const ContextOpt
     const OsMesaApi& osmesa = *osmesa_api();
     std::unique_ptr<OsMesaContext> self(new OsMesaContext(options, nullptr));
     std::string tried;
-    for (const Version& v : versions) {
+    for (const Version& v : *versions) {
         const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
                                   OSMESA_DEPTH_BITS, 0,
                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE,
@@ -99,14 +96,11 @@ frustum::Result<std::unique_ptr<Context>> OsMesaContext::create(const ContextOpt
         if (self->context_ != nullptr) {
             break;
         }
-        tried += (tried.empty() ? "" : ", ") + std::to_string(v.major) + "." + std::to_string(v.minor);
+        tried += (tried.empty() ? "" : ", ") + to_string(v);
     }
     if (self->context_ == nullptr) {
         return frustum::Error{std::string(kCreate) +
                               ": no OpenGL core context, OSMesaCreateContextAttribs failed for " + tried};
-    }
-    if (auto current = self->make_current(); !current) {
-        return frustum::Error{current.error()};
     }
     if (auto ready = self->initialize(Api::GlCore, kCreate); !ready) {
         return frustum::Error{ready.error()};

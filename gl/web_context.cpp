@@ -42,9 +42,6 @@ frustum::Result<std::unique_ptr<WebGlContext>> WebGlContext::create(const std::s
                               std::to_string(handle) + ")"};
     }
     std::unique_ptr<WebGlContext> context(new WebGlContext(options, canvas, handle));
-    if (auto current = context->make_current(); !current) {
-        return frustum::Error{current.error()};
-    }
     if (auto initialized = context->initialize(Api::Gles, "gl::WebGlContext::create()"); !initialized) {
         return frustum::Error{initialized.error()};
     }
