@@ -1,7 +1,7 @@
 #include "frustum/culling.hpp"
 
 #include "frustum/detail/eye_side.hpp"
-#include "frustum/detail/portal_carry.hpp"
+#include "frustum/detail/portal_preamble.hpp"
 #include "frustum/projection.hpp"
 #include "frustum/reflect.hpp"
 
@@ -89,16 +89,11 @@ Result<CullingFrustum<T>> culling_pair(const MatrixPair<T>& camera, const Plane<
 template <class T>
 Result<CullingFrustum<T>> culling_pair(const MatrixPair<T>& camera, const Frame<T>& entry, const Frame<T>& exit,
                                        const CropRect<T>& rect) {
-    const auto carry = detail::portal_carry(entry, exit, "culling_pair");
-    if (!carry) {
-        return carry.take_error();
+    const auto carried = detail::carried_through_portal(camera, entry, exit, "culling_pair");
+    if (!carried) {
+        return carried.take_error();
     }
-    if (const auto error = detail::eye_in_front(camera, frame_plane(entry), "culling_pair", "entry_plane",
-                                                "the eye must not lie in the entry portal's plane",
-                                                "the eye must be on the entry portal's front (positive) side")) {
-        return *error;
-    }
-    return cropped_with_near(compose(camera, *carry), frame_plane(exit), rect, "culling_pair");
+    return cropped_with_near(*carried, frame_plane(exit), rect, "culling_pair");
 }
 
 #define FRUSTUM_INSTANTIATE(T)                                                                              \

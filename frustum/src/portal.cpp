@@ -1,7 +1,7 @@
 #include "frustum/portal.hpp"
 
-#include "frustum/detail/eye_side.hpp"
 #include "frustum/detail/portal_carry.hpp"
+#include "frustum/detail/portal_preamble.hpp"
 #include "frustum/oblique_clip.hpp"
 #include "frustum/projection.hpp"
 
@@ -49,17 +49,11 @@ Result<RigidTransform<T>> portal_transform(const Frame<T>& entry, const Frame<T>
 
 template <class T>
 Result<MatrixPair<T>> portal(const MatrixPair<T>& pair, const Frame<T>& entry, const Frame<T>& exit) {
-    const auto carry = detail::portal_carry(entry, exit, "portal");
-    if (!carry) {
-        return carry.take_error();
+    const auto carried = detail::carried_through_portal(pair, entry, exit, "portal"); // M T, T^-1 M^-1
+    if (!carried) {
+        return carried.take_error();
     }
-    if (const auto error = detail::eye_in_front(pair, frame_plane(entry), "portal", "entry_plane",
-                                                "the eye must not lie in the entry portal's plane",
-                                                "the eye must be on the entry portal's front (positive) side")) {
-        return *error;
-    }
-    const MatrixPair<T> carried = compose(pair, *carry); // M T, T^-1 M^-1
-    auto clipped = clip_oblique(carried, frame_plane(exit));
+    auto clipped = clip_oblique(*carried, frame_plane(exit));
     if (!clipped) {
         return clipped.take_error_in("frustum::portal()");
     }

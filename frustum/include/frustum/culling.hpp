@@ -1,5 +1,5 @@
 // Frustum culling on the matrix pair's planes (§3.1), and the separate
-// culling frustum a mirror or portal pass needs (NOTES.md erratum 8).
+// culling frustum a mirror or portal pass needs (docs/errata.md, erratum 8).
 #pragma once
 
 #include "frustum/crop.hpp"
