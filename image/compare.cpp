@@ -25,27 +25,32 @@ frustum::Status check_pair(const Image& a, const Image& b, const char* where) {
     return {};
 }
 
-} // namespace
-
-double Diff::fraction_over() const {
-    return pixel_count == 0 ? 0.0 : static_cast<double>(pixels_over) / pixel_count;
-}
-
-frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_tolerance) {
-    if (auto ok = check_pair(a, b, "image::compare()"); !ok) {
+// The one per-pixel difference behind compare() and compare_masked(): the
+// first `channels` channels of the pixels `mask` selects (null: every pixel).
+frustum::Result<Diff> diff_pixels(const Image& a, const Image& b, const std::vector<bool>* mask, std::size_t channels,
+                                  int per_channel_tolerance, const char* where) {
+    if (auto ok = check_pair(a, b, where); !ok) {
         return ok.take_error();
     }
     if (per_channel_tolerance < 0) {
-        return frustum::Error{"image::compare(): tolerance must be >= 0, got " +
+        return frustum::Error{std::string(where) + ": tolerance must be >= 0, got " +
                               std::to_string(per_channel_tolerance)};
     }
+    const std::size_t pixels = a.rgba.size() / 4;
+    if (mask != nullptr && mask->size() != pixels) {
+        return frustum::Error{std::string(where) + ": the mask must hold " + std::to_string(pixels) +
+                              " entries (" + size_text(a) + "), got " + std::to_string(mask->size())};
+    }
     Diff diff;
-    diff.pixel_count = a.width * a.height;
     diff.tolerance = per_channel_tolerance;
-    double sum = 0.0;
-    for (std::size_t pixel = 0; pixel < a.rgba.size(); pixel += 4) {
+    long long sum = 0;
+    for (std::size_t pixel = 0; pixel < pixels; ++pixel) {
+        if (mask != nullptr && !(*mask)[pixel]) {
+            continue;
+        }
+        ++diff.pixel_count;
         int pixel_max = 0;
-        for (std::size_t c = pixel; c < pixel + 4; ++c) {
+        for (std::size_t c = 4 * pixel; c < 4 * pixel + channels; ++c) {
             const int delta = std::abs(int{a.rgba[c]} - int{b.rgba[c]});
             sum += delta;
             pixel_max = std::max(pixel_max, delta);
@@ -53,8 +58,25 @@ frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_to
         diff.max_abs = std::max(diff.max_abs, pixel_max);
         diff.pixels_over += pixel_max > per_channel_tolerance ? 1 : 0;
     }
-    diff.mean_abs = sum / static_cast<double>(a.rgba.size());
+    const double compared = static_cast<double>(channels) * diff.pixel_count;
+    diff.mean_abs = diff.pixel_count > 0 ? static_cast<double>(sum) / compared : 0.0;
     return diff;
+}
+
+} // namespace
+
+double Diff::fraction_over() const {
+    return pixel_count == 0 ? 0.0 : static_cast<double>(pixels_over) / pixel_count;
+}
+
+frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_tolerance) {
+    return diff_pixels(a, b, nullptr, 4, per_channel_tolerance, "image::compare()");
+}
+
+frustum::Result<Diff> compare_masked(const Image& a, const Image& b, const std::vector<bool>& mask, Channels channels,
+                                     int per_channel_tolerance) {
+    return diff_pixels(a, b, &mask, channels == Channels::Rgb ? 3 : 4, per_channel_tolerance,
+                       "image::compare_masked()");
 }
 
 frustum::Result<Image> diff_image(const Image& a, const Image& b, int gain) {

@@ -5,6 +5,8 @@
 
 #include <frustum/result.hpp>
 
+#include <vector>
+
 namespace image {
 
 struct Diff {
@@ -22,6 +24,16 @@ struct Diff {
 // sizes differ, e.g. "image::compare(): sizes must match, got 4x4 and 4x5";
 // a negative tolerance is an error too.
 frustum::Result<Diff> compare(const Image& a, const Image& b, int per_channel_tolerance);
+
+// The channels compare_masked() reads.
+enum class Channels { Rgb, Rgba };
+
+// compare() over the pixels whose mask[y * width + x] is set, of `channels`
+// only: pixel_count counts them, mean_abs is over their compared channels
+// (0 for an empty mask). Errors as compare(), named "image::compare_masked()",
+// and when the mask does not hold width * height entries.
+frustum::Result<Diff> compare_masked(const Image& a, const Image& b, const std::vector<bool>& mask, Channels channels,
+                                     int per_channel_tolerance);
 
 // |a - b| per RGB channel times `gain` (clamped to 255), alpha 255, so small
 // differences become visible when a test saves it next to the two inputs.

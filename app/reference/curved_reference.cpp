@@ -1,6 +1,7 @@
 #include "reference/curved_reference.hpp"
 
 #include <frustum/depth_range.hpp>
+#include <image/compare.hpp>
 
 #include <algorithm>
 #include <array>
@@ -303,31 +304,8 @@ RayAngleError lookup_ray_error(const CurvedMirror& mirror, const CurvedPlan& pla
 
 MirrorError compare_on_mask(const image::Image& rendered, const image::Image& traced, const std::vector<bool>& mask,
                             int threshold) {
-    MirrorError e;
-    long long sum = 0;
-    int over = 0;
-    for (int y = 0; y < rendered.height; ++y) {
-        for (int x = 0; x < rendered.width; ++x) {
-            if (!mask[static_cast<std::size_t>(y * rendered.width + x)]) {
-                continue;
-            }
-            ++e.pixels;
-            const image::Rgba a = image::pixel_at(rendered, x, y), b = image::pixel_at(traced, x, y);
-            int worst = 0;
-            for (std::size_t c = 0; c < 3; ++c) {
-                const int d = std::abs(int{a[c]} - int{b[c]});
-                sum += d;
-                worst = std::max(worst, d);
-            }
-            e.max_abs = std::max(e.max_abs, worst);
-            over += worst > threshold ? 1 : 0;
-        }
-    }
-    if (e.pixels > 0) {
-        e.mean_abs = static_cast<double>(sum) / (3.0 * e.pixels);
-        e.fraction_over = static_cast<double>(over) / e.pixels;
-    }
-    return e;
+    const image::Diff d = image::compare_masked(rendered, traced, mask, image::Channels::Rgb, threshold).value();
+    return MirrorError{d.pixel_count, d.mean_abs, d.max_abs, d.fraction_over()};
 }
 
 } // namespace render

@@ -53,8 +53,9 @@ struct RayAngleError {
 RayAngleError lookup_ray_error(const CurvedMirror& mirror, const CurvedPlan& plan,
                                const frustum::MatrixPair<float>& camera, int width_px, int height_px);
 
-// Rendered vs traced over the pixels of `mask`. Precondition: both images
-// and the mask have the same size.
+// Rendered vs traced over the pixels of `mask` (image::compare_masked(),
+// RGB). Precondition: both images and the mask have the same size (else it
+// aborts with compare_masked()'s error).
 struct MirrorError {
     int pixels = 0;
     double mean_abs = 0;      // mean |a - b| over the RGB channels, 0..255

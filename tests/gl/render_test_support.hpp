@@ -151,29 +151,9 @@ struct MaskedDiff {
 };
 
 inline MaskedDiff compare_masked(const image::Image& a, const image::Image& b, const Mask& mask, int tolerance) {
-    REQUIRE(a.width == b.width);
-    REQUIRE(a.height == b.height);
-    MaskedDiff d;
-    long long sum = 0;
-    for (int y = 0; y < a.height; ++y) {
-        for (int x = 0; x < a.width; ++x) {
-            if (!mask[static_cast<std::size_t>(y * a.width + x)]) {
-                continue;
-            }
-            ++d.compared;
-            const image::Rgba p = image::pixel_at(a, x, y), q = image::pixel_at(b, x, y);
-            int worst = 0;
-            for (std::size_t c = 0; c < 3; ++c) {
-                const int difference = std::abs(int{p[c]} - int{q[c]});
-                worst = std::max(worst, difference);
-                sum += difference;
-            }
-            d.max_abs = std::max(d.max_abs, worst);
-            d.pixels_over += worst > tolerance ? 1 : 0;
-        }
-    }
-    d.mean_abs = d.compared > 0 ? static_cast<double>(sum) / (3.0 * d.compared) : 0.0;
-    return d;
+    const auto d = image::compare_masked(a, b, mask, image::Channels::Rgb, tolerance);
+    REQUIRE_MESSAGE(d.ok(), d.error());
+    return MaskedDiff{d->pixel_count, d->pixels_over, d->max_abs, d->mean_abs};
 }
 
 // The marker's lit red: red high, green and blue near zero (no other
