@@ -34,13 +34,14 @@ set(FRUSTUM_LAYERS
   "tests/package:frustum"
   "tests/cli:vectors frustum"
   "tests/plan:plan scene image frustum"
-  "tests/scene:scene image frustum"
+  "tests/scene:scene image frustum support"
   "tests/fuzz:scene vectors frustum"
-  "tests/robustness:scene vectors image frustum"
+  "tests/robustness:scene vectors gl image frustum support"
   "tests/gl:render reference precision plan scene gl image frustum"
   "tests/bench:render reference plan scene gl image frustum"
-  "tests/window:window demo render plan scene gl image frustum"
+  "tests/window:window demo render plan scene gl image frustum support"
   "tests/web:image frustum"
+  "tests/support:support" # frustum_test_support: what the suites share
   "tests:tests") # tests/sample_files.hpp, shared by the suites as "../sample_files.hpp"
 
 # Each layer's library: the target whose links frustum_check_layers() checks.
@@ -56,7 +57,8 @@ set(FRUSTUM_LAYER_TARGETS
   "window:frustum_window frustum_window_imgui"
   "vectors:frustum_vectors_lib"
   "demo:frustum_demo_cli"
-  "precision:frustum_precision")
+  "precision:frustum_precision"
+  "support:frustum_test_support")
 
 # <target> sees "<layer>/..." as <folder>/... (PUBLIC: so do the targets
 # that link it). The root holds nothing else.

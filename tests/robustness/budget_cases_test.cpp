@@ -24,7 +24,7 @@ constexpr long kAddressSpaceCap = 2048L << 20; // 2 GiB
 // MiB in an AddressSanitizer build (redzones and the freed-memory
 // quarantine about double the heap; the address-space cap is left out
 // there, see support.cpp).
-constexpr long kRefusedPeakKb = (rob::kSanitized ? 400 : 200) * 1024;
+constexpr long kRefusedPeakKb = (support::kSanitized ? 400 : 200) * 1024;
 
 std::string asset() { return R"("asset": {"version": "2.0"})"; }
 
@@ -61,20 +61,20 @@ std::string empty_objects_extras(long count) {
 
 #ifdef FRUSTUM_DEMO_EXE
 struct Run {
-    rob::Outcome outcome;
+    support::Outcome outcome;
     bool out_exists = false;
 };
 
-Run demo(const rob::TempDir& dir, const std::string& gltf, std::vector<std::string> options) {
-    rob::write_file(dir / "scene.gltf", gltf);
+Run demo(const support::TempDir& dir, const std::string& gltf, std::vector<std::string> options) {
+    support::write_file(dir / "scene.gltf", gltf);
     std::vector<std::string> args{"render", "--scene", (dir / "scene.gltf").string(), "--out",
                                   (dir / "out").string()};
     args.insert(args.end(), options.begin(), options.end());
-    rob::Launch launch;
+    support::Launch launch;
     launch.args = args;
     launch.address_space_limit_bytes = kAddressSpaceCap;
     Run run;
-    run.outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
+    run.outcome = support::run(FRUSTUM_DEMO_EXE, launch);
     run.out_exists = fs::exists(dir / "out");
     return run;
 }
@@ -83,8 +83,7 @@ void check_refused(const Run& run, int status, const std::vector<std::string>& p
     INFO("stderr: " << run.outcome.err);
     CHECK(run.outcome.signal == 0);
     CHECK(run.outcome.exit_status == status);
-    const auto missing = rob::missing_phrase(run.outcome.err, phrases);
-    CHECK_MESSAGE(!missing, "missing phrase: ", missing.value_or(""));
+    support::check_phrases(run.outcome.err, phrases);
     CHECK(run.outcome.peak_rss_kb < kRefusedPeakKb);
     CHECK_FALSE(run.out_exists); // no new empty folder
     CHECK(run.outcome.err.find('\n') == run.outcome.err.size() - 1); // one line
@@ -96,7 +95,7 @@ void check_refused(const Run& run, int status, const std::vector<std::string>& p
 
 #ifdef FRUSTUM_DEMO_EXE
 TEST_CASE("budget: zero-filled accessors over the memory budget are refused before decoding") {
-    rob::TempDir dir;
+    support::TempDir dir;
     // 318 bytes on main -> 5.5 GB peak RSS: 4 x 16 Mi vertices.
     const Run run = demo(dir, zero_filled(16777216, 4, 1), {"--effect", "plain", "--size", "64x64"});
     check_refused(run, 1, {"the scene decodes to 1 GiB", "over the budget of 256 MiB",
@@ -104,7 +103,7 @@ TEST_CASE("budget: zero-filled accessors over the memory budget are refused befo
 }
 
 TEST_CASE("budget: zero-filled accessors that fit are rendered") {
-    rob::TempDir dir;
+    support::TempDir dir;
     const Run run = demo(dir, zero_filled(3000, 2, 2), {"--effect", "plain", "--size", "32x32"});
     INFO("stderr: " << run.outcome.err);
     CHECK(run.outcome.exit_status == 0);
@@ -112,14 +111,14 @@ TEST_CASE("budget: zero-filled accessors that fit are rendered") {
 }
 
 TEST_CASE("budget: one accessor drawn by many nodes is bounded by --max-drawn-vertices") {
-    rob::TempDir dir;
+    support::TempDir dir;
     const Run run = demo(dir, zero_filled(1000000, 1, 40), {"--effect", "plain", "--size", "64x64"});
     check_refused(run, 1, {"the vertex count drawn per frame", "over the limit of 33554432",
                            "raise it with --max-drawn-vertices"});
 }
 
 TEST_CASE("budget: node count, chains and cycles cost O(nodes) and a short message") {
-    rob::TempDir dir;
+    support::TempDir dir;
     SUBCASE("more nodes than --max-nodes: refused while reading the JSON") {
         check_refused(demo(dir, chain(100001, false), {"--effect", "plain"}), 1,
                       {"the file has more than 100000 nodes", "raise it with --max-nodes"});
@@ -136,14 +135,14 @@ TEST_CASE("budget: node count, chains and cycles cost O(nodes) and a short messa
 }
 
 TEST_CASE("budget: a JSON tree larger than the budget is refused before tinygltf builds it") {
-    rob::TempDir dir;
+    support::TempDir dir;
     // 2 million "{}" (6 MB of text): a tree of ~300 MB per parse on main.
     check_refused(demo(dir, empty_objects_extras(2000000), {"--effect", "plain"}), 1,
                   {"the JSON holds more than 1677721 values", "raise it with --max-memory-mb"});
 }
 
 TEST_CASE("budget: images over the budget are refused before they are decoded") {
-    rob::TempDir dir;
+    support::TempDir dir;
     // A PNM header claiming 8192x8192 (691 MB on main): not a glTF image format.
     const std::string pnm_uri = "data:image/png;base64,UDYKODE5MiA4MTkyCjI1NQo="; // "P6\n8192 8192\n255\n"
     const std::string gltf = "{" + asset() + R"(, "images": [{"uri": ")" + pnm_uri +
@@ -152,7 +151,7 @@ TEST_CASE("budget: images over the budget are refused before they are decoded") 
 }
 
 TEST_CASE("budget: output images and tiles are bounded before rendering") {
-    rob::TempDir dir;
+    support::TempDir dir;
     SUBCASE("8192x8192 with every effect: 5.7 GB and a stb overflow on main") {
         check_refused(demo(dir, zero_filled(3, 1, 1), {"--size", "8192x8192"}), 2,
                       {"--size 8192x8192 with 9 effect(s) holds", "over the budget of 256 MiB",
@@ -166,47 +165,47 @@ TEST_CASE("budget: output images and tiles are bounded before rendering") {
 }
 
 TEST_CASE("failed runs leave no new folder; help-valid lens values work; --sagitta is bounded") {
-    rob::TempDir dir;
+    support::TempDir dir;
     SUBCASE("--camera nosuch") {
-        rob::Launch launch;
+        support::Launch launch;
         launch.args = {"render", "--camera", "nosuch", "--effect", "plain", "--out", (dir / "new" / "dir").string()};
-        const rob::Outcome outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
+        const support::Outcome outcome = support::run(FRUSTUM_DEMO_EXE, launch);
         CHECK(outcome.exit_status == 2);
         CHECK_FALSE(fs::exists(dir / "new"));
     }
     SUBCASE("--sagitta 1e30 with an effect that does not use it") {
-        rob::Launch launch;
+        support::Launch launch;
         launch.args = {"render", "--sagitta", "1e30", "--effect", "plain", "--size", "32x32", "--out",
                        (dir / "out").string()};
-        const rob::Outcome outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
+        const support::Outcome outcome = support::run(FRUSTUM_DEMO_EXE, launch);
         CHECK(outcome.exit_status == 2);
         CHECK(outcome.err.find("frustum-demo: error: --sagitta 1e+30 must be in [0, ") !=
               std::string::npos);
         CHECK_FALSE(fs::exists(dir / "out"));
     }
     SUBCASE("the largest --lens-power and --lens-grid the help calls valid") {
-        rob::Launch launch;
+        support::Launch launch;
         launch.args = {"render", "--effect", "lens", "--lens-power", "2", "--lens-grid", "128", "--size", "256x256",
                        "--out", (dir / "out").string()};
-        const rob::Outcome outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
+        const support::Outcome outcome = support::run(FRUSTUM_DEMO_EXE, launch);
         INFO("stderr: " << outcome.err);
         CHECK(outcome.exit_status == 0);
-        rob::Launch beyond = launch;
+        support::Launch beyond = launch;
         beyond.args[4] = "2.5";
-        CHECK(rob::run(FRUSTUM_DEMO_EXE, beyond).err.find("--lens-power must be a number in (0, 2]") !=
+        CHECK(support::run(FRUSTUM_DEMO_EXE, beyond).err.find("--lens-power must be a number in (0, 2]") !=
               std::string::npos);
     }
 }
 
 TEST_CASE("window --screenshot / write_png refuse to replace what is not a regular file") {
-    rob::TempDir dir;
+    support::TempDir dir;
     const fs::path fifo = dir / "fifo.png";
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
     fs::create_directory(dir / "out");
     fs::create_symlink(fifo, dir / "out" / "plain.png");
-    rob::Launch launch;
+    support::Launch launch;
     launch.args = {"render", "--effect", "plain", "--size", "16x16", "--out", (dir / "out").string()};
-    const rob::Outcome outcome = rob::run(FRUSTUM_DEMO_EXE, launch);
+    const support::Outcome outcome = support::run(FRUSTUM_DEMO_EXE, launch);
     INFO("stderr: " << outcome.err);
     CHECK(outcome.exit_status == 1);
     CHECK(outcome.err.find("is a symbolic link, not a regular file; refusing to replace it") != std::string::npos);
@@ -219,10 +218,10 @@ TEST_CASE("budget: frustum-vectors refuses a document of a million values withou
     std::string text = "[";
     for (int i = 0; i < 1100000; ++i) text += i ? ",{}" : "{}";
     text += "]";
-    rob::Launch launch;
+    support::Launch launch;
     launch.stdin_text = text;
     launch.address_space_limit_bytes = kAddressSpaceCap;
-    const rob::Outcome outcome = rob::run(FRUSTUM_VECTORS_EXE, launch);
+    const support::Outcome outcome = support::run(FRUSTUM_VECTORS_EXE, launch);
     INFO("stderr: " << outcome.err);
     CHECK(outcome.exit_status == 2);
     CHECK(outcome.err.find("more than 1000000 values") != std::string::npos);

@@ -27,15 +27,15 @@ enum class Out { NotCreated, NoFiles };
 
 struct DemoCase {
     const char* input;
-    std::function<std::vector<std::string>(const rob::TempDir&)> args; // may create files in the folder
+    std::function<std::vector<std::string>(const support::TempDir&)> args; // may create files in the folder
     int exit_status;
     std::vector<std::string> phrases; // on stderr
     Out out;
 };
 
 // "render" + the given options, with --out <tmp>/out appended.
-std::function<std::vector<std::string>(const rob::TempDir&)> render(std::vector<std::string> options) {
-    return [options](const rob::TempDir& dir) {
+std::function<std::vector<std::string>(const support::TempDir&)> render(std::vector<std::string> options) {
+    return [options](const support::TempDir& dir) {
         std::vector<std::string> args{"render"};
         args.insert(args.end(), options.begin(), options.end());
         args.insert(args.end(), {"--out", (dir / "out").string()});
@@ -44,9 +44,9 @@ std::function<std::vector<std::string>(const rob::TempDir&)> render(std::vector<
 }
 
 // A scene file in the temp folder with the given text.
-std::function<std::vector<std::string>(const rob::TempDir&)> scene_text(std::string text) {
-    return [text](const rob::TempDir& dir) {
-        rob::write_file(dir / "scene.gltf", text);
+std::function<std::vector<std::string>(const support::TempDir&)> scene_text(std::string text) {
+    return [text](const support::TempDir& dir) {
+        support::write_file(dir / "scene.gltf", text);
         return render({"--scene", (dir / "scene.gltf").string()})(dir);
     };
 }
@@ -55,9 +55,9 @@ const std::string kTriangle = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/glt
 
 const std::vector<DemoCase>& demo_cases() {
     static const std::vector<DemoCase> cases = {
-        {"no command", [](const rob::TempDir&) { return std::vector<std::string>{}; }, 2,
+        {"no command", [](const support::TempDir&) { return std::vector<std::string>{}; }, 2,
          {"frustum-demo: error: expected a command: render"}, Out::NotCreated},
-        {"unknown command", [](const rob::TempDir& d) { return std::vector<std::string>{"draw", "--out", (d / "out").string()}; },
+        {"unknown command", [](const support::TempDir& d) { return std::vector<std::string>{"draw", "--out", (d / "out").string()}; },
          2, {"unknown command 'draw'"}, Out::NotCreated},
         {"unknown option", render({"--colour", "red"}), 2, {"unknown option '--colour'"}, Out::NotCreated},
         {"--size 0x10", render({"--size", "0x10"}), 2, {"--size must be WxH with 1..8192 each, got '0x10'"}, Out::NotCreated},
@@ -102,22 +102,22 @@ const std::vector<DemoCase>& demo_cases() {
          Out::NoFiles},
         {"--sagitta too large for the mirror", render({"--effect", "curved", "--sagitta", "50", "--size", "64x36"}), 2,
          {"--sagitta 50 must be in [0, "}, Out::NotCreated},
-        {"empty --out", [](const rob::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
+        {"empty --out", [](const support::TempDir&) { return std::vector<std::string>{"render", "--out", ""}; }, 2,
          {"--out needs a folder"}, Out::NotCreated},
-        {"--scene without a value", [](const rob::TempDir& d) {
+        {"--scene without a value", [](const support::TempDir& d) {
              return std::vector<std::string>{"render", "--out", (d / "out").string(), "--scene"};
          }, 2, {"--scene needs a value"}, Out::NotCreated},
         {"unknown camera", render({"--scene", kTriangle, "--camera", "nosuch"}), 2, {"no camera 'nosuch'"}, Out::NoFiles},
-        {"missing scene", [](const rob::TempDir& d) { return render({"--scene", (d / "none.gltf").string()})(d); }, 1,
+        {"missing scene", [](const support::TempDir& d) { return render({"--scene", (d / "none.gltf").string()})(d); }, 1,
          {"frustum-demo: error: scene::load_gltf(): ", "none.gltf\" does not exist"}, Out::NoFiles},
         {"scene that is not glTF", scene_text("GIF89a"), 1, {"not a glTF file"}, Out::NoFiles},
         {"scene with uri \"..\"", scene_text(R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "../x.bin", "byteLength": 4}]})"),
          1, {"buffer 0 uri \"../x.bin\"", "outside the model folder"}, Out::NoFiles},
-        {"--out below a regular file", [](const rob::TempDir& d) {
-             rob::write_file(d / "file", "x");
+        {"--out below a regular file", [](const support::TempDir& d) {
+             support::write_file(d / "file", "x");
              return std::vector<std::string>{"render", "--out", (d / "file" / "out").string()};
          }, 1, {"cannot create output folder", "Not a directory"}, Out::NotCreated},
-        {"--out read-only", [](const rob::TempDir& d) {
+        {"--out read-only", [](const support::TempDir& d) {
              // root ignores permission bits: /sys refuses new files even to root.
              std::string ro = "/sys";
              if (::geteuid() != 0) {
@@ -170,37 +170,33 @@ bool no_gl() {
 TEST_SUITE("robustness") {
 
 TEST_CASE("frustum-demo: usage errors exit 2, runtime failures exit 1, nothing written") {
-    CHECK(demo_cases().size() >= 18);
-    for (const DemoCase& c : demo_cases()) {
-        const std::string input = c.input;
-        CAPTURE(input);
-        rob::TempDir dir;
-        rob::Launch launch;
+    support::for_each_case(demo_cases(), 18, [](const DemoCase& c) {
+        support::TempDir dir;
+        support::Launch launch;
         launch.args = c.args(dir);
         launch.cwd = dir.path().string(); // the default --out "out" would land here
-        const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+        const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
         CAPTURE(r.err);
         CHECK(r.signal == 0);
         CHECK(r.exit_status == c.exit_status);
         CHECK_MESSAGE(r.out.empty(), "stdout must be empty, got: ", r.out.substr(0, 200));
         CHECK(r.err.rfind("frustum-demo: error: ", 0) == 0);
-        const auto missing = rob::missing_phrase(r.err, c.phrases);
-        CHECK_MESSAGE(!missing, "missing phrase: ", missing.value_or(""));
+        support::check_phrases(r.err, c.phrases);
         if (c.out == Out::NotCreated) {
             CHECK_FALSE(fs::exists(dir / "out"));
         } else {
             CHECK(rob::list_dir(dir / "out").empty());
         }
         CHECK_MESSAGE(leftovers(dir.path()).empty(), "left behind: ", joined(leftovers(dir.path())));
-    }
+    });
 }
 
 TEST_CASE("frustum-demo: an effect of several that fails leaves the others and the sheet, exit 1 naming it") {
-    rob::TempDir dir;
-    rob::Launch launch;
+    support::TempDir dir;
+    support::Launch launch;
     launch.args = {"render", "--pivot", "900", "--size", "64x36", "--out", (dir / "out").string()};
     if (no_gl()) return;
-    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.exit_status == 1);
     CHECK(r.err.find("frustum-demo: error: effect nonaffine: --pivot 900 must be less than the far distance") !=
@@ -215,12 +211,12 @@ TEST_CASE("frustum-demo: an effect of several that fails leaves the others and t
 }
 
 TEST_CASE("frustum-demo: a write that fails midway (file size limit) leaves no PNG and no temp file") {
-    rob::TempDir dir;
-    rob::Launch launch;
+    support::TempDir dir;
+    support::Launch launch;
     launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
     launch.file_size_limit_bytes = 4096; // the PNG is larger: write() fails with EFBIG
     if (no_gl()) return;
-    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.signal == 0);
     CHECK(r.exit_status == 1);
@@ -231,13 +227,13 @@ TEST_CASE("frustum-demo: a write that fails midway (file size limit) leaves no P
 }
 
 TEST_CASE("frustum-demo: killed in the middle of a write, no partial PNG under the final name") {
-    rob::TempDir dir;
-    rob::Launch launch;
+    support::TempDir dir;
+    support::Launch launch;
     launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
     launch.file_size_limit_bytes = 4096;
     launch.ignore_sigxfsz = false; // SIGXFSZ kills the process inside write()
     if (no_gl()) return;
-    const rob::Outcome r = rob::run(FRUSTUM_DEMO_EXE, launch);
+    const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.signal == SIGXFSZ);
     CHECK_FALSE(fs::exists(dir / "out" / "plain.png"));

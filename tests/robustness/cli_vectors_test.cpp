@@ -66,14 +66,11 @@ const std::vector<VectorsCase>& vectors_cases() {
 TEST_SUITE("robustness") {
 
 TEST_CASE("frustum-vectors: bad arguments and requests") {
-    CHECK(vectors_cases().size() >= 12);
-    for (const VectorsCase& c : vectors_cases()) {
-        const std::string input = c.input;
-        CAPTURE(input);
-        rob::Launch launch;
+    support::for_each_case(vectors_cases(), 12, [](const VectorsCase& c) {
+        support::Launch launch;
         launch.args = c.args;
         launch.stdin_text = c.stdin_text;
-        const rob::Outcome r = rob::run(FRUSTUM_VECTORS_EXE, launch);
+        const support::Outcome r = support::run(FRUSTUM_VECTORS_EXE, launch);
         CAPTURE(r.err);
         CHECK(r.signal == 0);
         CHECK(r.exit_status == c.exit_status);
@@ -84,31 +81,30 @@ TEST_CASE("frustum-vectors: bad arguments and requests") {
         } else {
             CHECK(r.err.empty());
         }
-        const auto missing = rob::missing_phrase(c.exit_status != 0 ? r.err : r.out, c.phrases);
-        CHECK_MESSAGE(!missing, "missing phrase: ", missing.value_or(""));
-    }
+        support::check_phrases(c.exit_status != 0 ? r.err : r.out, c.phrases);
+    });
 }
 
 TEST_CASE("frustum-vectors: input over 64 MiB is exit 2 with nothing on stdout") {
-    rob::TempDir dir;
+    support::TempDir dir;
     const std::string big = (dir / "big.json").string();
     const int fd = ::open(big.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     REQUIRE(fd >= 0);
     REQUIRE(::ftruncate(fd, (off_t(64) << 20) + 1) == 0); // sparse: zero bytes
     ::close(fd);
-    rob::Launch launch;
+    support::Launch launch;
     launch.stdin_file = big;
-    const rob::Outcome r = rob::run(FRUSTUM_VECTORS_EXE, launch);
+    const support::Outcome r = support::run(FRUSTUM_VECTORS_EXE, launch);
     CHECK(r.exit_status == 2);
     CHECK(r.out.empty());
     CHECK(r.err.find("frustum-vectors: input is larger than 64 MiB") == 0);
 }
 
 TEST_CASE("frustum-vectors: a failed write of stdout is exit 1") {
-    rob::Launch launch;
+    support::Launch launch;
     launch.stdin_text = one_case(kPerspective);
     launch.stdout_file = "/dev/full";
-    const rob::Outcome r = rob::run(FRUSTUM_VECTORS_EXE, launch);
+    const support::Outcome r = support::run(FRUSTUM_VECTORS_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.exit_status == 1);
     CHECK(r.err == "frustum-vectors: cannot write the output\n");

@@ -46,10 +46,10 @@ namespace {
 
 // Loads the bytes as fuzz_gltf does; returns the error ("" when loaded).
 std::string load_like_fuzz_gltf(const std::string& bytes) {
-    rob::TempDir dir;
+    support::TempDir dir;
     const std::string model = fuzz_layout::make(dir.path());
     REQUIRE_FALSE(model.empty());
-    rob::write_file(model, bytes);
+    support::write_file(model, bytes);
     const rob::Isolated load = rob::isolated([&model] {
         const auto result = scene::load_gltf(model);
         return result.ok() ? std::string("loaded") : "error: " + result.error();

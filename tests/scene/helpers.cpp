@@ -1,10 +1,8 @@
 #include "helpers.hpp"
 
-#include <atomic>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace scene_test {
 
@@ -115,20 +113,9 @@ Bytes make_glb(Json gltf, const Bytes& bin) {
     return glb;
 }
 
-TempDir::TempDir() {
-    static std::atomic<int> counter{0};
-    root_ = fs::temp_directory_path() /
-            ("frustum_scene_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    model_dir_ = root_ / "model";
-    outside_dir_ = root_ / "outside";
-    fs::remove_all(root_);
+TempDir::TempDir() : model_dir_(root_ / "model"), outside_dir_(root_ / "outside") {
     fs::create_directories(model_dir_);
     fs::create_directories(outside_dir_);
-}
-
-TempDir::~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
 }
 
 } // namespace scene_test

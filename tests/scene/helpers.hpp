@@ -2,6 +2,8 @@
 // mutation, base64 and GLB packing. Test-only code.
 #pragma once
 
+#include "support/temp_dir.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -34,19 +36,16 @@ void image0_into_buffer_view(Json& gltf);
 // A .glb: JSON chunk (buffer 0 without uri, holding `bin`) + BIN chunk.
 Bytes make_glb(Json gltf, const Bytes& bin);
 
-// A fresh, empty folder below the system temp folder, removed on scope exit
+// A fresh, empty model folder in a support::TempDir, removed on scope exit
 // (with a sibling "outside" folder for escape tests).
 class TempDir {
 public:
     TempDir();
-    ~TempDir();
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
     const std::filesystem::path& path() const { return model_dir_; }
     const std::filesystem::path& outside() const { return outside_dir_; }
 
 private:
-    std::filesystem::path root_;
+    support::TempDir root_;
     std::filesystem::path model_dir_;
     std::filesystem::path outside_dir_;
 };

@@ -29,7 +29,7 @@ using window_test::crop;
 using window_test::pixels_differing;
 using window_test::read;
 using window_test::render_offscreen;
-using window_test::TempDir;
+using support::TempDir;
 
 constexpr int kPanelPx = static_cast<int>(demo::kPanelWidthPx) + 1; // with its border
 constexpr int kDiffers = 200;

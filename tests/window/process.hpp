@@ -1,6 +1,9 @@
-// Running a built program as a child process for the window suite: with
-// environment variables removed or set, stdout and stderr captured.
+// Running frustum-demo as a child process for the window suite: the suite's
+// timeout over tests/support's runner, with environment variables removed
+// or set.
 #pragma once
+
+#include "support/child_process.hpp"
 
 #include <filesystem>
 #include <map>
@@ -10,10 +13,8 @@
 
 namespace window_test {
 
-struct Child {
-    int exit_status = -1; // -1 when killed by a signal
-    std::string out, err;
-};
+// exit_status, out and err of a finished child (tests/support).
+using Child = support::Outcome;
 
 // The longest a child may run: the longest measured, the key sweep under
 // xvfb-run (about 40 s alone on llvmpipe, 2 cores), times 7 for a loaded
@@ -21,28 +22,14 @@ struct Child {
 // never closes) then fails its test instead of stalling the suite.
 inline constexpr int kChildTimeoutS = 300;
 
-// Runs `program` with `args` (no shell) and waits for it, at most
-// `timeout_s`: then its whole process group is killed (SIGKILL) and the
-// test fails with the command. `environment`: a value sets the variable,
-// nullopt removes it; the rest is inherited.
+// support::run() of `program` with `args`, at most `timeout_s`.
+// `environment`: a value sets the variable, nullopt removes it; the rest is
+// inherited.
 Child run(const std::string& program, const std::vector<std::string>& args,
           const std::map<std::string, std::optional<std::string>>& environment = {},
           int timeout_s = kChildTimeoutS);
 
 // `name` found on PATH, else empty.
 std::string find_on_path(const std::string& name);
-
-// A fresh folder below the system temp folder, removed when the object dies.
-class TempDir {
-public:
-    TempDir();
-    ~TempDir();
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    std::filesystem::path path_;
-};
 
 } // namespace window_test

@@ -36,7 +36,7 @@ image::Image read(const std::filesystem::path& path) {
     return std::move(*picture);
 }
 
-image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size,
+image::Image render_offscreen(const support::TempDir& dir, const std::string& effect, const std::string& size,
                               const std::vector<std::string>& more) {
     std::vector<std::string> args{"render", "--size", size, "--effect", effect, "--out", (dir / "render").string()};
     args.insert(args.end(), more.begin(), more.end());

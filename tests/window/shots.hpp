@@ -9,6 +9,8 @@
 
 #include "process.hpp"
 
+#include "support/temp_dir.hpp"
+
 #include <image/image.hpp>
 
 #include <filesystem>
@@ -29,7 +31,7 @@ std::optional<Child> run_window_under_xvfb(const std::vector<std::string>& optio
 image::Image read(const std::filesystem::path& path);
 
 // The offscreen renderer's image of `effect` at `size` ("WxH"), in dir/render.
-image::Image render_offscreen(const TempDir& dir, const std::string& effect, const std::string& size,
+image::Image render_offscreen(const support::TempDir& dir, const std::string& effect, const std::string& size,
                               const std::vector<std::string>& more = {});
 
 // The pixels of `picture` inside [x0, x1) x [y0, y1) (rows from the top).

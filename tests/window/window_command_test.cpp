@@ -28,7 +28,7 @@ using window_test::kTolerance;
 using window_test::read;
 using window_test::render_offscreen;
 using window_test::run_window_under_xvfb;
-using window_test::TempDir;
+using support::TempDir;
 
 } // namespace
 
