@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Renders the showcase scene with every effect (plain, mirror, tiles,
-# frustum) into out/ plus a contact sheet, and prints where they are.
+# Renders the showcase scene with every effect, nine images (plain, mirror,
+# tiles, frustum, curved, lens, nonaffine, portal, recursion), into out/ plus
+# a contact sheet, and prints where they are.
 # `make demo` runs it as: bash scripts/demo.sh BUILD_DIR
 #
 #   bash scripts/demo.sh BUILD_DIR [--update-docs]
 #
 # It first prints a walkthrough of the math on one camera (frustum-explain).
-# --update-docs also copies the images into docs/images/ (the README shows
-# them). Those are tracked files, so only this flag touches them; plain
+# --update-docs also copies the first four and the sheet into docs/images/
+# (the README shows them). Those are tracked files, so only this flag touches them; plain
 # `make demo` leaves the work tree as it was. Exits non-zero when anything fails.
 set -euo pipefail
 

@@ -205,7 +205,7 @@ std::vector<Option> session_rows() {
          "camera by name (glTF camera, else its node) or index;\n"
          "default \"main\", else camera 0, else one framing the scene",
          camera, kEveryCommand, "main", false, scene_camera()},
-        {"--effect", "E", "plain | mirror | tiles | frustum | curved | lens | nonaffine |\nall (default all)", effects,
+        {"--effect", "E", "plain | mirror | tiles | frustum | curved | lens | nonaffine |\nportal | recursion | all (default all)", effects,
          kRender, "tiles", false},
         {"--effect", "E", "first effect: " + effect_names() + " (default plain)", first_effect, kWindow, "tiles",
          false, choice(effect_choices())},

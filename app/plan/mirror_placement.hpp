@@ -23,7 +23,6 @@ struct MirrorRequest {
     // centre c, first side a, second side b (full lengths, world units);
     // reflects towards a x b.
     std::optional<std::array<float, 9>> rect;
-    bool by_hand() const { return plane || rect; }
 };
 
 // Gives `scene` the mirror `request` asks for and says where it went, e.g.
