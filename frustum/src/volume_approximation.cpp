@@ -202,6 +202,14 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
         Vec3<T> step;
         bool accepted = false;
         if (solve_positive_definite(system, gradient, step)) {
+            // The gain the quadratic model predicts, g . step / 2 (exact for a
+            // pure Newton step, an overestimate when damped): below a
+            // thousandth of `tolerance` means converged (the step after would
+            // gain less than `tolerance` by far), and there a step would only
+            // round F down.
+            if (!(glm::dot(gradient, step) > T(2e-3) * tolerance)) {
+                break;
+            }
             const Vec3<T> candidate = origin + step;
             Vec3<T> candidate_gradient;
             Mat3<T> candidate_hessian;

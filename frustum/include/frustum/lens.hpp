@@ -2,7 +2,9 @@
 // into tiles; each tile's corners on the refraction plane are moved by the
 // lens law (eq. 34) and the tile is rendered through the frustum whose near
 // plane is the refraction plane and whose side planes pass through the eye
-// and the moved corners (the §4 construction, analytic inverse). Inside the
+// and the moved corners (§4's frustum, assembled per tile from the grid's
+// shared corners and edges: the inverse from its key points, §3.2, the
+// matrix from the planes through them; detail/lens_tile_assembly.hpp). Inside the
 // lens radius the moved quads shrink (magnification), outside they grow
 // (barrel distortion). Shared corners move alike, so tiles stay seamless.
 #pragma once
