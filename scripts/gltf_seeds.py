@@ -51,6 +51,26 @@ def glb_truncated():
     return whole[:len(whole) // 2]
 
 
+def meshopt_garbage():
+    # bufferView 1 (NORMAL, POSITION) claims to be EXT_meshopt_compression
+    # data held in the index bytes: no meshopt vertex stream (header 0xA0).
+    j = _json(_box())
+    j["bufferViews"][1]["extensions"] = {"EXT_meshopt_compression": {
+        "buffer": 0, "byteOffset": 576, "byteLength": 72, "byteStride": 12, "count": 48, "mode": "ATTRIBUTES"}}
+    j["extensionsUsed"] = j["extensionsRequired"] = ["EXT_meshopt_compression"]
+    return _text(j)
+
+
+def draco_garbage():
+    # The box's primitive claims KHR_draco_mesh_compression data in its
+    # index bufferView: no Draco stream (magic "DRACO").
+    j = _json(_box())
+    j["meshes"][0]["primitives"][0]["extensions"] = {"KHR_draco_mesh_compression": {
+        "bufferView": 0, "attributes": {"NORMAL": 1, "POSITION": 0}}}
+    j["extensionsUsed"] = j["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    return _text(j)
+
+
 def mirror_lens():
     # The box drawn twice, by nodes named "mirror" and "lens".
     j = _json(_box())
@@ -65,7 +85,9 @@ def mirror_lens():
 SEEDS = {
     "bad-accessor-over-read.gltf": accessor_over_read,
     "bad-deep-nesting.gltf": deep_nesting,
+    "bad-draco-garbage.gltf": draco_garbage,
     "bad-glb-truncated.glb": glb_truncated,
+    "bad-meshopt-garbage.gltf": meshopt_garbage,
     "bad-node-cycle.gltf": node_cycle,
     "mirror-lens.gltf": mirror_lens,
 }

@@ -190,4 +190,16 @@ TEST_CASE("hostile compressed data is refused in one line naming what is wrong")
     }
 }
 
+TEST_CASE("the compressed fuzz seeds (scripts/gltf_seeds.py) are refused by their decoder") {
+    const std::string seeds = std::string(FRUSTUM_SOURCE_DIR) + "/tests/fuzz/corpus/gltf/";
+    const auto meshopt = scene::load_gltf(seeds + "bad-meshopt-garbage.gltf");
+    REQUIRE_FALSE(meshopt.ok());
+    CHECK(meshopt.error().find("bufferView 1 EXT_meshopt_compression: the ATTRIBUTES data (72 bytes) does not decode "
+                               "to 48 elements of 12 bytes") != std::string::npos);
+    const auto draco = scene::load_gltf(seeds + "bad-draco-garbage.gltf");
+    REQUIRE_FALSE(draco.ok());
+    CHECK(draco.error().find("mesh 0 primitive 0 KHR_draco_mesh_compression: the Draco data (bufferView 0, 72 bytes) "
+                             "does not decode") != std::string::npos);
+}
+
 } // TEST_SUITE
