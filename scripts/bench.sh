@@ -11,6 +11,9 @@ bench="$build/tests/bench"
 echo "== accuracy of the analytic inverse updates (float vs double reference)"
 "$bench/ops_accuracy" 100000 | tee "$out/ops_accuracy.md"
 
+echo "== accuracy of lens_tiles (float vs a double plane construction; issue 34)"
+"$bench/lens_accuracy" 200 | tee "$out/lens_accuracy.md"
+
 echo "== speed: analytic update vs build + glm::inverse (one run, side by side)"
 # The machine's load before and after: the figures are only comparable
 # within one run. Repetitions are interleaved in random order, so a change
