@@ -169,15 +169,15 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     CurvedPlan plan;
     plan.session = std::make_unique<Session>(); // on the heap: GL objects point to its members
     Session& session = *plan.session;
-    if (auto failure = load_session(session, r, true)) {
+    // As render opens it: a scene without a mirror gets the floor mirror,
+    // the sagitta is fitted to it unless --sagitta is given (and checked).
+    if (auto failure = session.open(r, reporter)) {
         return *failure;
     }
     const scene::Scene& scene = session.scene;
-    if (!scene.mirror) {
-        return runtime("curved-report: the scene has no mirror (a node named 'mirror', assets/README.md)");
-    }
+    const render::CurvedMirrorOptions& curved = session.effects.params.curved;
     const render::Cameras& cameras = *session.cameras;
-    auto mirror = render::CurvedMirror::create(*scene.mirror, r.curved.shape, r.curved.sagitta_m);
+    auto mirror = render::CurvedMirror::create(*scene.mirror, curved.shape, curved.sagitta_m);
     if (!mirror) {
         return runtime(mirror.error());
     }
@@ -185,9 +185,6 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     plan.eye = frustum::to_point(frustum::key_points(cameras.main.pair).eye, frustum::infinity_tolerance<float>());
     if (plan.eye.w != 1.0f) {
         return runtime("curved-report: the camera must be perspective");
-    }
-    if (auto failure = start_gl(session, r, reporter)) {
-        return *failure;
     }
     reporter.progress("tracing the references");
     const auto trace_start = std::chrono::steady_clock::now();
@@ -199,7 +196,7 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     plan.traced.emplace(std::move(*traced));
     // The same footprint flat (sagitta 0): every patch frustum is then exact
     // (the reflected eye), so its error is the sampling floor.
-    auto flat_mirror = render::CurvedMirror::create(*scene.mirror, r.curved.shape, 0.0);
+    auto flat_mirror = render::CurvedMirror::create(*scene.mirror, curved.shape, 0.0);
     if (!flat_mirror) {
         return runtime(flat_mirror.error());
     }
@@ -215,7 +212,7 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     plan.options.width_px = r.width_px;
     plan.options.height_px = r.height_px;
     plan.options.depth = r.depth;
-    plan.options.curved = r.curved;
+    plan.options.curved = curved;
     plan.options.mirror_tint = glm::vec3(1.0f);
     return plan;
 }
@@ -363,8 +360,8 @@ std::string format_report(const RenderRequest& r, const CurvedPlan& plan, const 
     }
     const int compared = measures.rows.empty() ? 0 : measures.rows.back().error.pixels;
     std::ostringstream md;
-    md << "Curved mirror: " << render::to_string(r.curved.shape) << " cap, sagitta " << fixed(r.curved.sagitta_m, 2)
-       << " m, over the scene's mirror; camera '" << plan.session->cameras->main.name << "', " << r.width_px << "x"
+    md << "Curved mirror: " << render::to_string(plan.options.curved.shape) << " cap, sagitta "
+       << fixed(plan.options.curved.sagitta_m, 2) << " m, over the scene's mirror; camera '" << plan.session->cameras->main.name << "', " << r.width_px << "x"
        << r.height_px << "; " << compared << " mirror pixels compared; reference traced in "
        << fixed(plan.trace_ms, 0) << " ms; planar mirror frame (oblique): " << fixed(measures.planar_ms, 1)
        << " ms; GL: " << plan.session->context->describe().renderer << ".\n\n"

@@ -17,7 +17,7 @@ constexpr float kMaxDepthM = 1000.0f; // --slit, --pivot (as nonaffine-report)
 
 std::string got(const std::string& value) { return ", got '" + value + "'"; }
 
-std::optional<Failure> apply_tiles(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_tiles(render::EffectParams& s, const std::string& value) {
     const auto tiles = parse_pair(value, kMaxTileSide);
     if (!tiles) {
         return usage("--tiles must be NxM (columns x rows, each >= 1)" + got(value));
@@ -26,21 +26,21 @@ std::optional<Failure> apply_tiles(EffectSettings& s, const std::string& value) 
     return std::nullopt;
 }
 
-std::optional<Failure> apply_tile_borders(EffectSettings& s, const std::string&) {
+std::optional<Failure> apply_tile_borders(render::EffectParams& s, const std::string&) {
     s.tile_borders = true;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_mirror(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_mirror(render::EffectParams& s, const std::string& value) {
     const auto method = render::parse_mirror_method(value);
     if (!method) {
         return usage("unknown mirror method '" + value + "' (expected oblique, rectangle or reflect_only)");
     }
-    s.mirror = *method;
+    s.mirror_method = *method;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_mirror_plane(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_mirror_plane(render::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 4);
     if (!v || glm::length(glm::vec3((*v)[0], (*v)[1], (*v)[2])) < 1e-6f) {
         return usage("--mirror-plane must be a,b,c,d (the plane a x + b y + c z + d = 0, finite numbers, "
@@ -50,7 +50,7 @@ std::optional<Failure> apply_mirror_plane(EffectSettings& s, const std::string& 
     return std::nullopt;
 }
 
-std::optional<Failure> apply_mirror_rect(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_mirror_rect(render::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 9);
     if (!v || glm::length(glm::cross(glm::vec3((*v)[3], (*v)[4], (*v)[5]), glm::vec3((*v)[6], (*v)[7], (*v)[8]))) <
                   1e-9f) {
@@ -63,7 +63,7 @@ std::optional<Failure> apply_mirror_rect(EffectSettings& s, const std::string& v
     return std::nullopt;
 }
 
-std::optional<Failure> apply_patches(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_patches(render::EffectParams& s, const std::string& value) {
     const auto patches = parse_count(value, render::kMaxCurvedPatches);
     if (!patches) {
         return usage("--patches must be a whole number in 1.." + std::to_string(render::kMaxCurvedPatches) +
@@ -73,7 +73,7 @@ std::optional<Failure> apply_patches(EffectSettings& s, const std::string& value
     return std::nullopt;
 }
 
-std::optional<Failure> apply_sagitta(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_sagitta(render::EffectParams& s, const std::string& value) {
     const auto sagitta_m = parse_number(value);
     if (!sagitta_m || !(*sagitta_m >= 0.0f)) {
         return usage("--sagitta must be a length in metres >= 0" + got(value));
@@ -83,7 +83,7 @@ std::optional<Failure> apply_sagitta(EffectSettings& s, const std::string& value
     return std::nullopt;
 }
 
-std::optional<Failure> apply_cap(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_cap(render::EffectParams& s, const std::string& value) {
     const auto shape = render::parse_cap_shape(value);
     if (!shape) {
         return usage("unknown cap shape '" + value + "' (expected sphere or cylinder)");
@@ -92,7 +92,7 @@ std::optional<Failure> apply_cap(EffectSettings& s, const std::string& value) {
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_grid(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_lens_grid(render::EffectParams& s, const std::string& value) {
     const auto grid = parse_count(value, kMaxLensGrid);
     if (!grid) {
         return usage("--lens-grid must be a whole number in 1.." + std::to_string(kMaxLensGrid) + got(value));
@@ -101,7 +101,7 @@ std::optional<Failure> apply_lens_grid(EffectSettings& s, const std::string& val
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_power(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_lens_power(render::EffectParams& s, const std::string& value) {
     const auto power = parse_number(value);
     if (!power || !(*power > 0.0f && *power <= kMaxLensPower)) {
         return usage("--lens-power must be a number in (0, 2]" + got(value));
@@ -110,7 +110,7 @@ std::optional<Failure> apply_lens_power(EffectSettings& s, const std::string& va
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_center(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_lens_center(render::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 2);
     if (!v || std::abs((*v)[0]) > 1.0f || std::abs((*v)[1]) > 1.0f) {
         return usage("--lens-center must be x,y with each in [-1, 1] (0,0 is the frame's centre, 1,1 its top "
@@ -120,7 +120,7 @@ std::optional<Failure> apply_lens_center(EffectSettings& s, const std::string& v
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_radius(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_lens_radius(render::EffectParams& s, const std::string& value) {
     const auto radius = parse_number(value);
     if (!radius || !(*radius > 0.0f && *radius <= 1.0f)) {
         return usage("--lens-radius must be a fraction of the frame's half height in (0, 1]" + got(value));
@@ -138,24 +138,24 @@ std::optional<Failure> apply_depth(std::optional<float>& slot, const char* name,
     return std::nullopt;
 }
 
-std::optional<Failure> apply_slit(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_slit(render::EffectParams& s, const std::string& value) {
     return apply_depth(s.fit.slit_m, "--slit", value);
 }
 
-std::optional<Failure> apply_pivot(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_pivot(render::EffectParams& s, const std::string& value) {
     return apply_depth(s.fit.pivot_m, "--pivot", value);
 }
 
 // Fog (render/fog_pass.hpp): depth decoded with each pass's own pair.
 
-std::optional<Failure> apply_fog(EffectSettings& s, const std::string&) {
+std::optional<Failure> apply_fog(render::EffectParams& s, const std::string&) {
     if (!s.fog) {
         s.fog = render::FogOptions{};
     }
     return std::nullopt;
 }
 
-std::optional<Failure> apply_fog_density(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_fog_density(render::EffectParams& s, const std::string& value) {
     const auto density = parse_number(value);
     if (!density || !(*density > 0.0f && *density <= 1000.0f)) {
         return usage("--fog-density must be a number in (0, 1000] per metre" + got(value));
@@ -165,7 +165,7 @@ std::optional<Failure> apply_fog_density(EffectSettings& s, const std::string& v
     return std::nullopt;
 }
 
-std::optional<Failure> apply_fog_color(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_fog_color(render::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 3);
     if (!v || std::any_of(v->begin(), v->end(), [](float c) { return !(c >= 0.0f && c <= 1.0f); })) {
         return usage("--fog-color must be r,g,b with each in [0, 1] (sRGB-encoded)" + got(value));
@@ -180,12 +180,12 @@ std::optional<Failure> apply_fog_color(EffectSettings& s, const std::string& val
 
 constexpr float kMaxIpdM = 10.0f;
 
-std::optional<Failure> apply_stereo(EffectSettings& s, const std::string&) {
+std::optional<Failure> apply_stereo(render::EffectParams& s, const std::string&) {
     s.stereo = true;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_ipd(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_ipd(render::EffectParams& s, const std::string& value) {
     const auto ipd_m = parse_number(value);
     if (!ipd_m || !(*ipd_m >= 0.0f && *ipd_m <= kMaxIpdM)) {
         return usage("--ipd-m must be a distance in [0, 10] metres" + got(value));
@@ -194,14 +194,14 @@ std::optional<Failure> apply_ipd(EffectSettings& s, const std::string& value) {
     return std::nullopt;
 }
 
-std::optional<Failure> apply_convergence(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_convergence(render::EffectParams& s, const std::string& value) {
     return apply_depth(s.convergence_m, "--convergence-m", value);
 }
 
 
 // The portal and recursion effects (docs/portals.md).
 
-std::optional<Failure> apply_recursion_depth(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_recursion_depth(render::EffectParams& s, const std::string& value) {
     const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, render::kMaxRecursionDepth);
     if (!depth) {
         return usage("--recursion-depth must be a whole number in 0.." + std::to_string(render::kMaxRecursionDepth) +
@@ -211,7 +211,7 @@ std::optional<Failure> apply_recursion_depth(EffectSettings& s, const std::strin
     return std::nullopt;
 }
 
-std::optional<Failure> apply_recursion_links(EffectSettings& s, const std::string& value) {
+std::optional<Failure> apply_recursion_links(render::EffectParams& s, const std::string& value) {
     const auto set = render::parse_link_set(value);
     if (!set) {
         return usage("unknown recursion links '" + value + "' (expected mirrors or portals)");
@@ -314,7 +314,7 @@ const EffectOption* find_effect_option(std::string_view name) {
     return nullptr;
 }
 
-std::optional<Failure> check_effect_settings(const EffectSettings& settings) {
+std::optional<Failure> check_effect_settings(const render::EffectParams& settings) {
     if (settings.mirror_place.plane && settings.mirror_place.rect) {
         return usage("--mirror-plane and --mirror-rect both place the mirror; give one of them");
     }

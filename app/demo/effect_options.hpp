@@ -9,13 +9,7 @@
 #include "demo/command.hpp"
 #include "demo/failure.hpp"
 
-#include <plan/curved_mirror.hpp>
-#include <plan/effect.hpp>
-#include <render/fog_pass.hpp>
-#include <plan/mirror_placement.hpp>
-#include <plan/scene_fit.hpp>
-#include <plan/stereo.hpp>
-#include <plan/view_links.hpp>
+#include <plan/effect_params.hpp>
 #include <plan/view_tree.hpp>
 
 #include <optional>
@@ -37,28 +31,10 @@ inline constexpr float kMaxLensPower = 2.0f;
 inline constexpr int kMaxTileSide = 8192;
 inline constexpr long long kMaxTiles = 16384;
 
-// What the effect options set (demo::Settings, what every command's
-// options set, is these plus the others). Unset parameters are derived from the scene
-// (plan/scene_fit.hpp, plan/mirror_placement.hpp, docs/any-scene.md).
-struct EffectSettings {
-    int tile_columns = 3, tile_rows = 2; // --tiles
-    bool tile_borders = false;           // --tile-borders
-    render::MirrorMethod mirror = render::MirrorMethod::Oblique; // --mirror
-    render::MirrorRequest mirror_place;  // --mirror-plane, --mirror-rect
-    render::CurvedMirrorOptions curved;  // --patches, --sagitta, --cap
-    bool sagitta_given = false;          // else fit_sagitta_m() of the mirror
-    int lens_grid = 16;                  // --lens-grid
-    float lens_power = 2.0f;             // --lens-power: p of eq. 34
-    render::EffectFit fit;               // --slit, --pivot, --lens-center, --lens-radius
-    // Fog (fog rows of effect_options.cpp): --fog, --fog-density, --fog-color.
-    std::optional<render::FogOptions> fog;
-    // Stereo (plan/stereo.hpp): side-by-side eyes, each its own pair.
-    bool stereo = false;                       // --stereo
-    float ipd_m = render::kDefaultIpdM;        // --ipd-m
-    std::optional<float> convergence_m;        // --convergence-m; unset: render::default_convergence_m()
-    int recursion_depth = 4;             // --recursion-depth
-    render::LinkSet recursion_links = render::LinkSet::Mirrors; // --recursion-links
-};
+// What the effect options set is render::EffectParams (plan/effect_params.hpp:
+// every effect value and its default, once); demo::Settings, what every
+// command's options set, is those plus the others. Unset parameters are
+// derived from the scene by render::resolve_effects() (docs/any-scene.md).
 
 // How the window's panel (demo/window_panel.hpp) edits a row with a value:
 // a slider per component over [low, high] (the row's own bounds; a value
@@ -92,7 +68,7 @@ struct EffectOption {
     const char* value; // "M" for the help line; nullptr: a flag without a value
     const char* help;  // what follows the name in --help (may hold '\n' + indent for more lines)
     // Applies the value; a usage Failure naming the value when it is out of range.
-    std::optional<Failure> (*apply)(EffectSettings& settings, const std::string& value);
+    std::optional<Failure> (*apply)(render::EffectParams& settings, const std::string& value);
     unsigned commands = kRender | kWindow; // Command bits
     const char* example = nullptr;         // a value the row accepts (tests/cli/demo_options_test.cpp)
     PanelControl control = {};             // the window panel's widget
@@ -105,6 +81,6 @@ const EffectOption* find_effect_option(std::string_view name);
 
 // Checks that need several options together (--mirror-plane and
 // --mirror-rect are exclusive; --tiles within kMaxTiles in all).
-std::optional<Failure> check_effect_settings(const EffectSettings& settings);
+std::optional<Failure> check_effect_settings(const render::EffectParams& settings);
 
 } // namespace demo

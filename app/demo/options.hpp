@@ -5,7 +5,7 @@
 // so an option shared by several commands is declared once and means the
 // same in all of them, and a command refuses every option it does not
 // declare. Adding an option is adding a row (and its field in Settings or
-// EffectSettings).
+// render::EffectParams).
 #pragma once
 
 #include "demo/command.hpp"
@@ -30,7 +30,7 @@ namespace demo {
 // What the options set, for every command (each reads the fields of the
 // options it declares). The defaults are those of render; defaults(command)
 // gives each command's own.
-struct Settings : EffectSettings {
+struct Settings : render::EffectParams {
     // The session: every command.
     std::string scene_path;            // --scene; default: FRUSTUM_ASSETS_DIR/showcase.gltf
     std::optional<std::string> camera; // --camera NAME|INDEX; default "main", else camera 0

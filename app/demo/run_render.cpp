@@ -26,49 +26,6 @@ std::string depth_summary(const render::Renderer& renderer, render::DepthPath pa
                : "depth: matrices converted to the [-1, 1] clip range";
 }
 
-std::optional<render::StereoRig> stereo_rig(const EffectSettings& settings, const frustum::MatrixPair<float>& camera,
-                                            const scene::Scene& scene) {
-    if (!settings.stereo) {
-        return std::nullopt;
-    }
-    render::StereoRig rig;
-    rig.ipd_m = settings.ipd_m;
-    rig.convergence_m = settings.convergence_m
-                            ? *settings.convergence_m
-                            : render::default_convergence_m(camera, scene.mirror, scene.world_bounds);
-    return rig;
-}
-
-EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter) {
-    if (auto placed = render::place_mirror(scene, settings.mirror_place)) {
-        reporter.note(*placed);
-    }
-    EffectSetup setup;
-    render::RenderOptions& options = setup.options;
-    options.mirror_method = settings.mirror;
-    options.curved = settings.curved;
-    if (scene.mirror) {
-        const float limit_m = render::max_sagitta_m(*scene.mirror, settings.curved.shape);
-        if (!settings.sagitta_given) {
-            options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, settings.curved.shape, scene.world_bounds);
-        } else if (!(settings.curved.sagitta_m <= limit_m)) {
-            setup.sagitta_error = "--sagitta " + render::number_text(settings.curved.sagitta_m) +
-                                  " must be in [0, " + render::number_text(limit_m) +
-                                  "] m for this mirror (half the distance from its centre to its rim)";
-        }
-    }
-    options.lens_grid = settings.lens_grid;
-    options.lens_power = settings.lens_power;
-    options.tile_columns = settings.tile_columns;
-    options.tile_rows = settings.tile_rows;
-    options.tile_borders = settings.tile_borders;
-    options.recursion_depth = settings.recursion_depth;
-    options.recursion_links = settings.recursion_links;
-    options.fit = settings.fit;
-    options.fog = settings.fog;
-    return setup;
-}
-
 namespace {
 
 std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
@@ -83,21 +40,12 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     g_activity = "loading the scene";
     auto owned = std::make_unique<Session>(); // on the heap: GL objects point to its members
     Session& session = *owned;
-    if (auto failure = load_session(session, request, true)) {
+    if (auto failure = session.open(request, reporter)) {
         return *failure;
     }
     g_activity = "rendering";
     const render::Cameras* cameras = &*session.cameras;
     scene::Scene* scene = &session.scene;
-    // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
-    const EffectSetup setup = setup_effects(*scene, request, reporter);
-    if (setup.sagitta_error) {
-        // The help bounds --sagitta by the mirror: refused whichever effects run.
-        return Failure{ExitStatus::UsageError, *setup.sagitta_error};
-    }
-    if (auto failure = start_gl(session, request, reporter)) {
-        return *failure;
-    }
     const gl::Functions* fn = session.fn.get();
     render::Renderer* renderer = &*session.renderer;
     auto samples = gl::choose_samples(*fn, request.msaa_samples);
@@ -111,7 +59,7 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
 
-    const std::optional<render::StereoRig> stereo = stereo_rig(request, cameras->main.pair, *scene);
+    const std::optional<render::StereoRig> stereo = render::stereo_rig(request, cameras->main.pair, *scene);
     if (stereo) { // the rig's bounds once, not once per effect
         if (auto eyes = render::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
             return runtime(eyes.error());
@@ -122,7 +70,8 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
                       render::number_text(stereo->convergence_m) + " m");
     }
 
-    render::RenderOptions options = setup.options;
+    render::RenderOptions options;
+    static_cast<render::EffectParams&>(options) = session.effects.params;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
     options.depth = request.depth;

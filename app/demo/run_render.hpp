@@ -34,24 +34,9 @@ struct RenderRun {
 // main's "out of memory while ..." message when an allocation throws.
 extern const char* g_activity;
 
-// The scene's mirror (placed by --mirror-plane / --mirror-rect, else a floor
-// when the scene has none: a note says where) and the render options the
-// effect settings ask for, with unset parameters derived from the scene.
-struct EffectSetup {
-    render::RenderOptions options;
-    std::optional<std::string> sagitta_error; // an explicit --sagitta too large for this mirror
-};
-EffectSetup setup_effects(scene::Scene& scene, const EffectSettings& settings, const Reporter& reporter);
-
 // The --verbose line saying which clip depth range `path` gives on the
 // renderer's context ("depth: [0, 1] clip range via clip control", ...).
 std::string depth_summary(const render::Renderer& renderer, render::DepthPath path);
-
-// The stereo rig --stereo, --ipd-m and --convergence-m ask for (the
-// convergence derived from the scene's mirror and bounds when unset, as
-// seen from `camera`); empty without --stereo.
-std::optional<render::StereoRig> stereo_rig(const EffectSettings& settings, const frustum::MatrixPair<float>& camera,
-                                            const scene::Scene& scene);
 
 // The output folder is checked first, before the scene is read. A run that
 // fails removes the folders it created while they are still empty.

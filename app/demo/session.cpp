@@ -20,25 +20,6 @@ std::variant<LoadedScene, Failure> load_scene(const Settings& settings) {
     return LoadedScene{std::move(*scene), *camera_index};
 }
 
-std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size) {
-    auto loaded = load_scene(settings);
-    if (auto* failure = std::get_if<Failure>(&loaded)) {
-        return *failure;
-    }
-    session.scene = std::move(std::get<LoadedScene>(loaded).scene);
-    session.camera_index = std::get<LoadedScene>(loaded).camera_index;
-    if (cameras_at_size) {
-        // Stereo: the cameras are made for one eye's half of the image.
-        const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;
-        auto cameras = render::make_cameras(session.scene, session.camera_index, eye_width_px, settings.height_px);
-        if (!cameras) {
-            return runtime(cameras.error());
-        }
-        session.cameras.emplace(std::move(*cameras));
-    }
-    return std::nullopt;
-}
-
 gl::ContextOptions context_options(const Settings& settings, const std::function<void(std::string_view)>& note) {
     gl::ContextOptions options;
     if (settings.verbose) {
@@ -58,26 +39,48 @@ frustum::Result<std::unique_ptr<gl::Context>> make_context(const Settings& setti
     });
 }
 
-std::optional<Failure> start_gl(Session& session, const Settings& settings, const Reporter& reporter,
-                                const ContextMaker& make) {
-    auto context = make ? make() : make_context(settings, reporter);
-    if (!context) {
-        return runtime(context.error());
+std::optional<Failure> Session::open(const Settings& settings, const Reporter& reporter, const OpenOptions& how) {
+    auto loaded = load_scene(settings);
+    if (auto* failure = std::get_if<Failure>(&loaded)) {
+        return *failure;
     }
-    session.context = std::move(*context);
+    scene = std::move(std::get<LoadedScene>(loaded).scene);
+    camera_index = std::get<LoadedScene>(loaded).camera_index;
+    if (how.cameras_at_size) {
+        // Stereo: the cameras are made for one eye's half of the image.
+        const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;
+        auto made = render::make_cameras(scene, camera_index, eye_width_px, settings.height_px);
+        if (!made) {
+            return runtime(made.error());
+        }
+        cameras.emplace(std::move(*made));
+    }
+    // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
+    effects = render::resolve_effects(settings, scene, settings.width_px, settings.height_px);
+    if (effects.placed) {
+        reporter.note(*effects.placed);
+    }
+    if (effects.refused && how.refuse_explicit) {
+        return Failure{ExitStatus::UsageError, *effects.refused};
+    }
+    auto made_context = how.make_context ? how.make_context() : make_context(settings, reporter);
+    if (!made_context) {
+        return runtime(made_context.error());
+    }
+    context = std::move(*made_context);
     if (settings.verbose) {
-        reporter.note("context: " + gl::summary(session.context->describe()));
+        reporter.note("context: " + gl::summary(context->describe()));
     }
-    auto fn = gl::Functions::load(*session.context);
-    if (!fn) {
-        return runtime(fn.error());
+    auto table = gl::Functions::load(*context);
+    if (!table) {
+        return runtime(table.error());
     }
-    session.fn = std::make_unique<gl::Functions>(*fn);
-    auto renderer = render::Renderer::create(*session.context, *session.fn, session.scene);
-    if (!renderer) {
-        return runtime(renderer.error());
+    fn = std::make_unique<gl::Functions>(*table);
+    auto made_renderer = render::Renderer::create(*context, *fn, scene);
+    if (!made_renderer) {
+        return runtime(made_renderer.error());
     }
-    session.renderer.emplace(std::move(*renderer));
+    renderer.emplace(std::move(*made_renderer));
     return std::nullopt;
 }
 

@@ -12,6 +12,7 @@
 #include <gl/context.hpp>
 #include <gl/functions.hpp>
 #include <plan/camera.hpp>
+#include <plan/effect_params.hpp>
 #include <render/renderer.hpp>
 #include <scene/scene.hpp>
 
@@ -28,6 +29,17 @@ struct Reporter {
     std::function<void(std::string_view)> note;     // backend fallback, --verbose context and KHR_debug lines
 };
 
+using ContextMaker = std::function<frustum::Result<std::unique_ptr<gl::Context>>()>;
+
+// How a command opens its session.
+struct OpenOptions {
+    bool cameras_at_size = true; // the cameras for a --size frame (the window makes its own per framebuffer)
+    // An explicit effect value the scene cannot take (render::ResolvedEffects::refused)
+    // is a usage error before any GL (render, the reports); the window refuses only its effect.
+    bool refuse_explicit = true;
+    ContextMaker make_context;   // empty: make_context() (offscreen, the one fallback)
+};
+
 // Members die in reverse: the renderer, then the table its objects point
 // to, then the context; the scene outlives them all. A command's own
 // session derives from it, so its GL objects die before the context.
@@ -35,9 +47,17 @@ struct Session {
     scene::Scene scene;
     int camera_index = -1;
     std::optional<render::Cameras> cameras; // at --size (the window makes its own, per framebuffer size)
+    render::ResolvedEffects effects;        // the effect values with what the scene derives (resolve_effects())
     std::unique_ptr<gl::Context> context;
     std::unique_ptr<gl::Functions> fn; // stable address: GL objects point to it
     std::optional<render::Renderer> renderer;
+
+    // The one way every command opens it: the scene (--scene within the
+    // --max-* budget) and its --camera -> the cameras -> the effect values
+    // resolved for the scene (the mirror placed; a note says where) -> the
+    // context -> its functions -> the renderer (which draws the placed
+    // mirror). With --verbose a note names the context.
+    std::optional<Failure> open(const Settings& settings, const Reporter& reporter, const OpenOptions& how = {});
 };
 
 // --scene within the --max-* budget and its --camera, as every command
@@ -48,17 +68,6 @@ struct LoadedScene {
     int camera_index = -1;
 };
 std::variant<LoadedScene, Failure> load_scene(const Settings& settings);
-
-// load_scene() into the session. With `cameras_at_size`, also the cameras
-// for a --size frame.
-std::optional<Failure> load_session(Session& session, const Settings& settings, bool cameras_at_size);
-
-using ContextMaker = std::function<frustum::Result<std::unique_ptr<gl::Context>>()>;
-
-// The context (make_context() when `make` is empty), its functions and the
-// renderer of the session's scene; with --verbose a note names the context.
-std::optional<Failure> start_gl(Session& session, const Settings& settings, const Reporter& reporter,
-                                const ContextMaker& make = {});
 
 // The offscreen context: exactly --backend when given, otherwise EGL, then
 // OSMesa with a note (when both fail, the error holds both reasons):

@@ -12,10 +12,7 @@ namespace {
 
 std::variant<std::unique_ptr<ReportSession>, Failure> open_session(const RenderRequest& r, const Reporter& reporter) {
     auto s = std::make_unique<ReportSession>();
-    if (auto failure = load_session(*s, r, true)) {
-        return *failure;
-    }
-    if (auto failure = start_gl(*s, r, reporter)) {
+    if (auto failure = s->open(r, reporter)) {
         return *failure;
     }
     auto depth = render::DepthPolicy::apply(*s->fn, *s->context, r.depth);

@@ -132,9 +132,9 @@ void WindowPanel::follow(const window::ViewerState& state) {
         current_.tile_columns = state.tile_columns;
         current_.tile_rows = state.tile_rows;
     }
-    if (first || state.mirror_method != current_.mirror) {
+    if (first || state.mirror_method != current_.mirror_method) {
         keep("--mirror", std::string(render::to_string(state.mirror_method)));
-        current_.mirror = state.mirror_method;
+        current_.mirror_method = state.mirror_method;
     }
     if (first || state.lens_power != current_.lens_power) {
         keep("--lens-power", render::number_text(state.lens_power));

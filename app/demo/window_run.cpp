@@ -45,17 +45,12 @@ struct WindowSession : Session {
     std::unique_ptr<window::ImGuiLayer> imgui; // the panel and the key help
     std::optional<window::GpuTimer> timer;
     std::optional<window::FragmentCounter> fragments; // desktop GL (--context gl) only
-    EffectSetup effects; // the effect options, with what they leave unset derived from the scene
 };
 
 std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowRequest& request,
                                                                   const std::function<void(std::string_view)>& note) {
     auto session = std::make_unique<WindowSession>();
-    if (auto failure = load_session(*session, request, false)) {
-        return *failure;
-    }
     const Reporter reporter{note, note};
-    session->effects = setup_effects(session->scene, request, reporter);
     gl::WindowOptions options;
     options.title = window::window_title(request.effects.front(), std::nullopt);
     options.width = request.width_px;
@@ -72,7 +67,11 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
         session->window = window->get();
         return std::unique_ptr<gl::Context>(std::move(*window));
     };
-    if (auto failure = start_gl(*session, request, reporter, open_window)) {
+    OpenOptions how;
+    how.cameras_at_size = false;  // per framebuffer size, each frame
+    how.refuse_explicit = false;  // the window refuses only the curved effect (effects.refused, in run_window)
+    how.make_context = open_window;
+    if (auto failure = session->open(request, reporter, how)) {
         return *failure;
     }
     auto samples = gl::choose_samples(*session->fn, request.msaa_samples);
@@ -100,25 +99,30 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
 }
 
 // The settings the viewer state holds (the keys change them afterwards):
-// at start-up, and again for each change made in the panel.
-void take_settings(const Settings& settings, window::ViewerState& state) {
+// the effect values as resolved for the session's scene, and the effect,
+// MSAA and depth path of the settings.
+void hold(const render::EffectParams& params, const Settings& settings, window::ViewerState& state) {
+    static_cast<render::EffectParams&>(state) = params;
     state.effect = settings.effects.front();
-    state.tile_columns = settings.tile_columns;
-    state.tile_rows = settings.tile_rows;
-    state.mirror_method = settings.mirror;
-    state.lens_power = settings.lens_power; // [ and ] change it
-    state.recursion_depth = settings.recursion_depth;
     state.msaa_samples = settings.msaa_samples;
     state.depth = settings.depth;
 }
 
-window::ViewerState initial_state(const WindowRequest& request) {
+window::ViewerState initial_state(const WindowRequest& request, const WindowSession& s) {
     window::ViewerState state;
-    take_settings(request, state);
+    hold(s.effects.params, request, state);
     state.show_help = request.help_overlay;
     state.show_panel = request.panel;
     state.show_inset = request.inset;
     return state;
+}
+
+// Settings from the panel, or for a scene file it loaded: resolved for the
+// session's scene as at start-up (render::resolve_effects()), the mirror
+// left where the scene has it (mirror_kept()), into the viewer state.
+void take_settings(const Settings& settings, WindowSession& s, window::ViewerState& state) {
+    s.effects = render::resolve_effects(settings, s.scene, settings.width_px, settings.height_px);
+    hold(s.effects.params, settings, state);
 }
 
 frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSize& size, const std::string& path) {
@@ -129,61 +133,48 @@ frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSi
     return image::write_png(*pixels, path);
 }
 
-// The frame's render options from the effect settings (the frame sets
-// size, tiles, mirror method and lens power from the viewer state).
-void apply_effect_settings(const EffectSetup& setup, window::Frame& frame, int width_px, int height_px) {
-    render::RenderOptions& o = frame.options;
-    o.curved = setup.options.curved;
-    o.fit = setup.options.fit;
-    o.tile_borders = setup.options.tile_borders;
-    o.fog = setup.options.fog; // --fog (the plain and mirror effects)
-    o.recursion_links = setup.options.recursion_links;
-    o.lens_grid = std::min(setup.options.lens_grid, std::min(width_px, height_px));
-}
-
-// Settings from the panel: the keys' fields into the viewer state, the
-// effect options set up anew (the mirror stays where start-up placed it).
-void apply_panel_settings(const Settings& settings, WindowSession& s, window::ViewerState& state,
-                          const Reporter& reporter) {
-    take_settings(settings, state);
-    Settings unplaced = settings;
-    unplaced.mirror_place = {};
-    s.effects = setup_effects(s.scene, unplaced, reporter);
+// The settings with the mirror left where the scene has it now (placed at
+// start-up or when its file was opened): the panel's changes do not move it.
+Settings mirror_kept(Settings settings) {
+    settings.mirror_place = {};
+    return settings;
 }
 
 // Another scene file, opened as at start-up: load_scene() (the --scene
-// and --camera of the settings), setup_effects() (the mirror placed) and a
-// renderer uploading it. Nothing of the session changes here: on any
+// and --camera of the settings) and a renderer uploading it, after the
+// mirror is placed as the settings ask (render::place_mirror(), which
+// take_settings() then keeps). Nothing of the session changes here: on any
 // error the old scene stays on screen and the message goes to the panel.
 struct OpenedScene {
     LoadedScene loaded;
-    EffectSetup effects;
+    std::optional<std::string> placed; // where the mirror went (render::place_mirror())
     render::Renderer renderer;
 };
 
-std::variant<OpenedScene, std::string> open_scene(const WindowSession& s, const Settings& settings,
-                                                  const Reporter& reporter) {
+std::variant<OpenedScene, std::string> open_scene(const WindowSession& s, const Settings& settings) {
     auto loaded = load_scene(settings);
     if (auto* failure = std::get_if<Failure>(&loaded)) {
         return failure->message;
     }
     LoadedScene& scene = std::get<LoadedScene>(loaded);
-    EffectSetup effects = setup_effects(scene.scene, settings, reporter);
+    std::optional<std::string> placed = render::place_mirror(scene.scene, settings.mirror_place);
     auto renderer = render::Renderer::create(*s.context, *s.fn, scene.scene);
     if (!renderer) {
         return renderer.error();
     }
-    return OpenedScene{std::move(scene), std::move(effects), std::move(*renderer)};
+    return OpenedScene{std::move(scene), std::move(placed), std::move(*renderer)};
 }
 
 // The opened scene replaces the session's: the old renderer (the old
 // scene's buffers, textures and programs) is destroyed first.
-void take_scene(WindowSession& s, OpenedScene opened) {
+void take_scene(WindowSession& s, OpenedScene opened, const Reporter& reporter) {
+    if (opened.placed) {
+        reporter.note(*opened.placed);
+    }
     s.renderer.reset();
     s.renderer.emplace(std::move(opened.renderer));
     s.scene = std::move(opened.loaded.scene);
     s.camera_index = opened.loaded.camera_index;
-    s.effects = std::move(opened.effects);
 }
 
 // The key help (and why an effect was not drawn): frame.text as an ImGui
@@ -266,7 +257,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
     };
     derive_from_scene();
     std::optional<OpenedScene> opened_scene; // another --scene the panel asked for, loaded by its check
-    window::ViewerState state = initial_state(request);
+    window::ViewerState state = initial_state(request, s);
     Settings settings = request; // what the panel last applied
     WindowPanel panel(args, request);
     window::MirrorPose applied_pose;
@@ -328,8 +319,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
         if (!frame) {
             return runtime(frame.error());
         }
-        apply_effect_settings(s.effects, *frame, eye_width_px, size.height_px);
-        frame->stereo = stereo_rig(settings, frame->cameras.main.pair, s.scene);
+        frame->stereo = render::stereo_rig(settings, frame->cameras.main.pair, s.scene);
         if (notice && !state.show_panel) {
             frame->text.insert(frame->text.begin(), *notice);
         }
@@ -343,8 +333,9 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
             s.timer->mark(pass);
             s.fragments->mark(pass);
         };
-        frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.sagitta_error
-                                      ? frustum::Status(frustum::Error{*s.effects.sagitta_error})
+        // An explicit value this scene cannot take (resolve_effects()): only its effect is refused.
+        frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.refused
+                                      ? frustum::Status(frustum::Error{*s.effects.refused})
                                       : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
         s.fragments->end();
         s.timer->end();
@@ -401,7 +392,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                         return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
                     }
                     if (next.scene_path != settings.scene_path) {
-                        auto opened = open_scene(s, next, reporter);
+                        auto opened = open_scene(s, next);
                         if (auto* error = std::get_if<std::string>(&opened)) {
                             return *error;
                         }
@@ -417,7 +408,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                 }
                 if (outcome.settings && opened_scene) {
                     // The new scene: its camera framed anew, the mirror and the facing mirrors where it puts them.
-                    take_scene(s, std::move(*opened_scene));
+                    take_scene(s, std::move(*opened_scene), reporter);
                     opened_scene.reset();
                     derive_from_scene();
                     state.orbit.reset();
@@ -437,7 +428,7 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
                         state.orbit.reset();
                     }
                     settings = std::move(*outcome.settings);
-                    apply_panel_settings(settings, s, state, reporter);
+                    take_settings(mirror_kept(settings), s, state);
                     cameras.reset(); // --stereo may have changed the eye's width
                     notice.reset();
                 }

@@ -10,6 +10,8 @@
 #include "render/pass_context.hpp"
 #include "render/program_support.hpp"
 
+#include <plan/fog_options.hpp>
+
 #include <frustum/matrix_pair.hpp>
 #include <frustum/result.hpp>
 #include <gl/functions.hpp>
@@ -22,18 +24,6 @@
 #include <optional>
 
 namespace render {
-
-// RenderOptions::fog; unset values are derived from the scene (fit_fog()).
-struct FogOptions {
-    std::optional<glm::vec3> color;     // sRGB-encoded; default: the frame's clear colour (the sky)
-    std::optional<float> density_per_m; // default: ln 2 / the scene's diagonal (half fog one diagonal away)
-    float start_m = 0.0f;               // no fog closer than this to the eye
-    // A counter-example for tests and the README: the reflection's depth
-    // decoded with the reflected pair before its oblique near plane (what
-    // engines that keep only the projection they started from do). Meant
-    // for MirrorMethod::Oblique, whose crop that pair shares.
-    bool decode_reflection_unclipped = false;
-};
 
 struct FogParams {
     glm::vec3 color{0.62f, 0.74f, 0.86f};

@@ -8,6 +8,7 @@
 #include "plan/curved_mirror.hpp"
 #include "render/depth_policy.hpp"
 #include "plan/effect.hpp"
+#include "plan/effect_params.hpp"
 #include "render/fog_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/non_affine_pass.hpp"
@@ -34,7 +35,11 @@
 
 namespace render {
 
-struct RenderOptions {
+// The effect values (plan/effect_params.hpp, each default stated there
+// once: tiles, mirror method, curved cap, lens grid and power, the fit, fog,
+// recursion; the stereo rig and mirror placement are the caller's) and
+// what a frame adds.
+struct RenderOptions : EffectParams {
     // Called as each pass of render_into() ends, with the pass's name
     // ("reflection" in the mirror effect, then "main view"; the portal and
     // recursion effects: "level k (n views)" after each view through k
@@ -44,25 +49,11 @@ struct RenderOptions {
     int width_px = 640;
     int height_px = 360;
     DepthPath depth = DepthPath::ClipControlWhenAvailable;
-    MirrorMethod mirror_method = MirrorMethod::Oblique; // mirror and frustum effects
-    int tile_columns = 3;                              // tiles effect
-    int tile_rows = 2;
     glm::vec3 mirror_tint{0.92f, 0.95f, 1.0f};         // mirror and curved effects
-    CurvedMirrorOptions curved;                        // curved effect: cap shape, sagitta, G x G patches
-    int lens_grid = 16;                                // lens effect: lens_grid x lens_grid tiles
-    float lens_power = 2.0f;                           // lens effect: p of eq. 34 (> 1 magnifies)
     NonAffineOptions nonaffine;                        // nonaffine effect: subdivision, culling (the slit
                                                        // and pivot come from `fit`, per frame)
-    EffectFit fit;                                     // slit, pivot, lens centre and radius; unset: derived
-                                                       // from the scene's bounds and the camera (scene_fit.hpp)
-    bool tile_borders = false;                         // tiles effect: draw each tile's border
-    int recursion_depth = 4;                           // recursion effect: links passed through, 0..8
-    LinkSet recursion_links = LinkSet::Mirrors;        // recursion effect: facing mirrors or a portal
     std::vector<LinkMove> link_moves;                  // recursion effect: each link moved after placement
     Lighting lighting;
-    // Plain and mirror effects: distance fog decoded from depth (fog_pass.hpp);
-    // unset: none. The other effects are drawn without it.
-    std::optional<FogOptions> fog;
     // MSAA samples of render()'s frame (gl::choose_samples()): kAutomaticSamples
     // = 4 or the context's maximum, 1 = off. render_into() uses the target's.
     int msaa_samples = gl::kAutomaticSamples;

@@ -8,6 +8,7 @@
 #include <frustum/matrix_pair.hpp>
 #include <gl/window_input.hpp>
 #include <plan/effect.hpp>
+#include <plan/effect_params.hpp>
 #include <plan/link_moves.hpp>
 #include <plan/view_tree.hpp>
 #include <render/depth_policy.hpp>
@@ -30,17 +31,15 @@ inline constexpr float kMinLensPower = 0.25f;
 inline constexpr float kMaxLensPower = 2.0f;
 
 // What the window shows; Controls::apply() changes it.
-struct ViewerState {
+// The effect values (plan/effect_params.hpp: their defaults stated there
+// once; the keys change tiles, mirror method, lens power and recursion
+// depth) and what only the window has.
+struct ViewerState : render::EffectParams {
     render::Effect effect = render::Effect::Plain;
     // Unset: the scene's main camera pair exactly (no camera input yet, or
     // after R). Set on the first camera input, starting where that camera is.
     std::optional<OrbitCamera> orbit;
     MirrorPose mirror;
-    render::MirrorMethod mirror_method = render::MirrorMethod::Oblique;
-    int tile_columns = 3;
-    int tile_rows = 2;
-    float lens_power = 2.0f; // lens effect; > 1 magnifies
-    int recursion_depth = 4; // recursion effect: levels, 0..render::kMaxRecursionDepth (keys , .)
     // Recursion effect: the left [0] and right [1] facing mirror, each moved
     // on its own (keys Z X, C V; with Shift turned) after the frame places them.
     std::vector<render::LinkMove> link_moves = std::vector<render::LinkMove>(2);

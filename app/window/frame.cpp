@@ -27,11 +27,12 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     }
     frame.options.width_px = width_px;
     frame.options.height_px = height_px;
-    frame.options.mirror_method = state.mirror_method;
+    // The effect values as the state holds them (resolved from the scene
+    // by the caller), the tile counts and the lens grid within this frame.
+    static_cast<render::EffectParams&>(frame.options) = state;
     frame.options.tile_columns = std::min(state.tile_columns, width_px);
     frame.options.tile_rows = std::min(state.tile_rows, height_px);
-    frame.options.lens_power = state.lens_power;
-    frame.options.recursion_depth = state.recursion_depth;
+    frame.options.lens_grid = std::min(state.lens_grid, std::min(width_px, height_px));
     frame.options.link_moves = state.link_moves;
     frame.options.msaa_samples = state.msaa_samples;
     frame.options.depth = state.depth;

@@ -36,8 +36,9 @@ struct Frame {
 
 // The frame `state` asks for on a width_px x height_px framebuffer:
 // cameras.main is scene_cameras.main exactly while state.orbit is unset,
-// else the orbit's pair at the framebuffer's aspect; the tile counts are
-// capped at one pixel per tile.
+// else the orbit's pair at the framebuffer's aspect; the effect values are
+// the state's, the tile counts and the lens grid capped at one pixel per
+// tile of this framebuffer (it changes with the window; the values given stay).
 frustum::Result<Frame> make_frame(const ViewerState& state, const render::Cameras& scene_cameras,
                                   const OrbitProjection& projection, const scene::Bounds& bounds, int width_px,
                                   int height_px);
