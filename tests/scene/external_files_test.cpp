@@ -1,6 +1,7 @@
 // Good files in other layouts: external .bin and image files inside the
 // model's folder, images in bufferViews, and .glb containers.
 #include "helpers.hpp"
+#include "scene_checks.hpp"
 
 #include "scene/load_gltf.hpp"
 
@@ -15,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-scene::Scene load_ok(const fs::path& path) {
-    frustum::Result<scene::Scene> result = scene::load_gltf(path.string());
-    INFO(result.error());
-    REQUIRE(result.ok());
-    return std::move(result).value();
-}
+using scene_test::load_ok;
 
 void check_same_box(const scene::Scene& loaded) {
     const scene::Scene reference = load_ok(scene_test::model_path("box.gltf"));

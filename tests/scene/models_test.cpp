@@ -3,6 +3,7 @@
 // wild exercises, checked on files the project made, with exact values.
 #include "../sample_files.hpp"
 #include "helpers.hpp"
+#include "scene_checks.hpp"
 
 #include "scene/load_gltf.hpp"
 
@@ -18,34 +19,12 @@ using scene_test::model_path;
 
 namespace {
 
-scene::Scene load_ok(const std::string& path, const scene::LoadOptions& options = {}) {
-    frustum::Result<scene::Scene> result = scene::load_gltf(path, options);
-    INFO(result.error());
-    REQUIRE(result.ok());
-    return std::move(result).value();
-}
+using scene_test::instance_named;
+using scene_test::load_ok;
 
 // Float values the generator wrote from doubles: a few float steps.
-bool near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-6f) {
-    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tolerance)));
-}
-
-bool near(const glm::mat4& a, const glm::mat4& b, float tolerance = 1e-6f) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            if (std::abs(a[c][r] - b[c][r]) > tolerance) return false;
-        }
-    }
-    return true;
-}
-
-const scene::Instance& instance_named(const scene::Scene& s, const std::string& name) {
-    for (const scene::Instance& instance : s.instances) {
-        if (instance.node_name == name) return instance;
-    }
-    FAIL("no instance named " << name);
-    return s.instances.front();
-}
+bool near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-6f) { return scene_test::near(a, b, tolerance); }
+bool near(const glm::mat4& a, const glm::mat4& b, float tolerance = 1e-6f) { return scene_test::near(a, b, tolerance); }
 
 // The RGBA8 texel (x, y) of image 0, y = 0 the image's top row.
 image::Rgba texel(const scene::Scene& s, int x, int y) {

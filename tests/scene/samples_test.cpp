@@ -4,6 +4,7 @@
 // project's own models cover the same loader features in models_test.cpp.
 #include "../sample_files.hpp"
 #include "helpers.hpp"
+#include "scene_checks.hpp"
 
 #include "scene/load_gltf.hpp"
 
@@ -17,38 +18,20 @@
 
 namespace {
 
+using scene_test::instance_named;
+using scene_test::load_ok;
+using scene_test::near;
+
+// The samples' values as printed to 6 significant digits; matrices built
+// here from the same floats: a few float steps.
+constexpr float kPrintedTolerance = 1e-4f;
+constexpr float kMatrixTolerance = 1e-5f;
+
 // FRUSTUM_TEST_DATA/gltf-samples/<model>/<model>.gltf
 std::string sample(const std::filesystem::path& samples, const std::string& model) {
     return (samples / model / (model + ".gltf")).string();
 }
 
-scene::Scene load_ok(const std::string& path, const scene::LoadOptions& options = {}) {
-    frustum::Result<scene::Scene> result = scene::load_gltf(path, options);
-    INFO(result.error());
-    REQUIRE(result.ok());
-    return std::move(result).value();
-}
-
-bool near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-4f) {
-    return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(tolerance)));
-}
-
-bool near(const glm::mat4& a, const glm::mat4& b, float tolerance = 1e-5f) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            if (std::abs(a[c][r] - b[c][r]) > tolerance) return false;
-        }
-    }
-    return true;
-}
-
-const scene::Instance& instance_named(const scene::Scene& s, const std::string& name) {
-    for (const scene::Instance& instance : s.instances) {
-        if (instance.node_name == name) return instance;
-    }
-    FAIL("no instance named " << name);
-    return s.instances.front();
-}
 
 } // namespace
 
@@ -129,14 +112,14 @@ TEST_CASE("Duck: camera, decoded texture, node scale in the bounds") {
     REQUIRE(camera.zfar_m.has_value());
     CHECK(*camera.zfar_m == doctest::Approx(10000.0));
     // Parent scale 0.01 moves the camera but is stripped from its rotation.
-    CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(4.00113f, 4.63264f, -4.31078f)));
+    CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(4.00113f, 4.63264f, -4.31078f), kPrintedTolerance));
     for (int axis = 0; axis < 3; ++axis) {
         CHECK(glm::length(glm::vec3(camera.camera_to_world[axis])) == doctest::Approx(1.0));
     }
-    CHECK(near(glm::vec3(camera.camera_to_world[2]), glm::vec3(0.536475f, 0.621148f, -0.571288f)));
+    CHECK(near(glm::vec3(camera.camera_to_world[2]), glm::vec3(0.536475f, 0.621148f, -0.571288f), kPrintedTolerance));
 
-    CHECK(near(s.world_bounds.min, glm::vec3(-0.6929850f, 0.0992937f, -0.6132820f)));
-    CHECK(near(s.world_bounds.max, glm::vec3(0.9617990f, 1.6397000f, 0.5392520f)));
+    CHECK(near(s.world_bounds.min, glm::vec3(-0.6929850f, 0.0992937f, -0.6132820f), kPrintedTolerance));
+    CHECK(near(s.world_bounds.max, glm::vec3(0.9617990f, 1.6397000f, 0.5392520f), kPrintedTolerance));
 }
 
 TEST_CASE("Cameras: perspective and orthographic with their node transforms") {
@@ -153,7 +136,7 @@ TEST_CASE("Cameras: perspective and orthographic with their node transforms") {
     REQUIRE(s.cameras[1].zfar_m.has_value());
     CHECK(*s.cameras[1].zfar_m == doctest::Approx(100.0));
     for (const scene::Camera& camera : s.cameras) {
-        CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(0.5f, 0.5f, 3.0f)));
+        CHECK(near(glm::vec3(camera.camera_to_world[3]), glm::vec3(0.5f, 0.5f, 3.0f), kPrintedTolerance));
     }
 }
 
@@ -223,9 +206,9 @@ TEST_CASE("Box: the parent node matrix becomes the instance's world transform") 
     REQUIRE(s.instances.size() == 1);
     const glm::mat4 rotation_x(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0),
                                glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));
-    CHECK(near(s.instances[0].world, rotation_x));
-    CHECK(near(s.world_bounds.min, glm::vec3(-0.5f)));
-    CHECK(near(s.world_bounds.max, glm::vec3(0.5f)));
+    CHECK(near(s.instances[0].world, rotation_x, kMatrixTolerance));
+    CHECK(near(s.world_bounds.min, glm::vec3(-0.5f), kPrintedTolerance));
+    CHECK(near(s.world_bounds.max, glm::vec3(0.5f), kPrintedTolerance));
     REQUIRE(s.materials.size() == 1);
     CHECK(s.materials[0].base_color_factor.r == doctest::Approx(0.8));
 
@@ -237,8 +220,8 @@ TEST_CASE("Box: the parent node matrix becomes the instance's world transform") 
     const std::string moved = (dir.path() / "moved.gltf").string();
     scene_test::write_text(moved, gltf.dump());
     const scene::Scene m = load_ok(moved);
-    CHECK(near(m.world_bounds.min, glm::vec3(9.5f, -0.5f, -2.5f)));
-    CHECK(near(m.world_bounds.max, glm::vec3(10.5f, 0.5f, -1.5f)));
+    CHECK(near(m.world_bounds.min, glm::vec3(9.5f, -0.5f, -2.5f), kPrintedTolerance));
+    CHECK(near(m.world_bounds.max, glm::vec3(10.5f, 0.5f, -1.5f), kPrintedTolerance));
 }
 
 TEST_CASE("OrientationTest: TRS and matrix nodes") {
@@ -251,19 +234,19 @@ TEST_CASE("OrientationTest: TRS and matrix nodes") {
     const glm::mat4 expected_trs = glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0)) *
                                    glm::mat4_cast(q) *
                                    glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 0.9999999403953552f, 0.9999999403953552f));
-    CHECK(near(trs.world, expected_trs));
+    CHECK(near(trs.world, expected_trs, kMatrixTolerance));
     // T * R * S, not another order: the translation column is untouched.
-    CHECK(near(glm::vec3(trs.world[3]), glm::vec3(5, 0, 0)));
+    CHECK(near(glm::vec3(trs.world[3]), glm::vec3(5, 0, 0), kPrintedTolerance));
 
     const scene::Instance& matrix = instance_named(s, "ArrowX2");
     const double m[16] = {1.0000000221841605, 0, 0, 0, 0, 0.9961947216654676, 0.08715572783347625, 0,
                           0, -0.08715572783347625, 0.9961947216654676, 0, -5.0, 0, 0, 1};
-    CHECK(near(matrix.world, glm::mat4(glm::make_mat4(m))));
+    CHECK(near(matrix.world, glm::mat4(glm::make_mat4(m)), kMatrixTolerance));
 
     const scene::Instance& z1 = instance_named(s, "ArrowZ1");
-    CHECK(near(glm::vec3(z1.world[3]), glm::vec3(0, 0, 5)));
+    CHECK(near(glm::vec3(z1.world[3]), glm::vec3(0, 0, 5), kPrintedTolerance));
     const scene::Instance& base = instance_named(s, "BaseCube");
-    CHECK(near(base.world, glm::mat4(1.0f)));
+    CHECK(near(base.world, glm::mat4(1.0f), kMatrixTolerance));
 }
 
 TEST_CASE("textured samples decode their images to RGBA8") {
