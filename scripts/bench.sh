@@ -26,6 +26,11 @@ uptime | tee "$out/bench_ops.load"
 uptime | tee -a "$out/bench_ops.load"
 
 if [ -x "$bench/bench_render" ]; then
+  echo "== CPU per frame of every effect, showcase 640x360, no GL (issue 34; medians of 9)"
+  uptime | tee "$out/cpu_frame.load"
+  "$bench/bench_render" --cpu_frame_table --benchmark_out="$out/cpu_frame.json" \
+    --benchmark_out_format=json | tee "$out/cpu_frame.txt"
+  uptime | tee -a "$out/cpu_frame.load"
   echo "== rendering cost: tight mirror frustum vs clip plane, tiles, lens tiles, per-frame updates"
   "$bench/bench_render" --out_dir="$out" --benchmark_out="$out/bench_render.json" \
     --benchmark_out_format=json | tee "$out/bench_render.txt"

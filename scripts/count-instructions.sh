@@ -8,8 +8,9 @@
 # ("-d exec" prints one line per block):
 #   per call = (count(R2 repeats) - count(R1 repeats)) / (R2 - R1) - loop,
 # where `loop` is the same for the empty op (the loop's own instructions).
-#   bash scripts/count-instructions.sh [aarch64|x86_64] [OUT_DIR]
-#   (default aarch64, OUT_DIR build-count-ARCH)
+#   bash scripts/count-instructions.sh [aarch64|x86_64] [OUT_DIR] [frame]
+#   (default aarch64, OUT_DIR build-count-ARCH; "frame": only the per-frame
+#   table of the effects, tests/bench/count_frame_driver.cpp)
 # Needs qemu-user, libglm-dev and, for aarch64, g++-aarch64-linux-gnu
 # (install-deps.sh --bench --arm).
 set -euo pipefail
@@ -43,6 +44,51 @@ for src in "$root"/frustum/src/*.cpp; do
   fi
   objects+=("$obj")
 done
+
+# The CPU per frame of each effect (tests/bench/count_frame_driver.cpp, the
+# rows of bench_render --cpu_frame_table): app/plan built for the target too;
+# one frame = count(3 frames) - count(1 frame), halved, the empty frame's
+# loop subtracted.
+frame_table() {
+  local plan_objects=() src obj
+  for src in "$root"/app/plan/*.cpp; do
+    obj="$out/plan_$(basename "${src%.cpp}").o"
+    if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/app/plan" "$root/app/scene/scene.hpp" "$root/frustum/include" -newer "$obj" -print -quit)" ]; then
+      "$cxx" "${flags[@]}" -I"$root" -I"$root/app" -c "$src" -o "$obj"
+    fi
+    plan_objects+=("$obj")
+  done
+  "$cxx" "${flags[@]}" -I"$root" -I"$root/app" -static "$root/tests/bench/count_frame_driver.cpp" \
+    "${plan_objects[@]}" "${objects[@]}" -o "$out/count_frame_driver"
+  count_frame() { # op repeats -> executed instructions of the whole run
+    "${qemu[@]}" -singlestep -d exec,nochain -D /dev/stdout "$out/count_frame_driver" "$1" "$2" | grep -c '^Trace'
+  }
+  per_frame() {
+    local a b
+    a=$(count_frame "$1" 1)
+    b=$(count_frame "$1" 3)
+    echo $(((b - a) / 2))
+  }
+  local empty
+  empty=$(per_frame none)
+  echo "| effect / grid (showcase, 640x360) | instructions per frame |"
+  echo "|---|---:|"
+  local op label
+  for op in plain:plain/default mirror:mirror/default tiles:tiles/default_3x2 tiles32:tiles/32x32 \
+    frustum:frustum/default curved:curved/default_4x4 curved64:curved/max_64x64 lens:lens/default_16x16 \
+    lens128:lens/max_128x128 portal:portal/default recursion:recursion/default_depth4 \
+    recursion8:recursion/max_depth8 stereo:stereo/default; do
+    label=${op#*:}
+    echo "| $label | $(($(per_frame "${op%%:*}") - empty)) |"
+  done
+  echo
+  echo "($arch, $("$cxx" --version | head -1); not counted: tiles/max_640x360 (too long under qemu), nonaffine (needs the scene's triangles), curved's curved_tile_size() (GL library))"
+}
+if [ "${3:-all}" = frame ]; then
+  frame_table
+  exit 0
+fi
+
 "$cxx" "${flags[@]}" -static "$root/tests/bench/count_driver.cpp" "${objects[@]}" -o "$out/count_driver"
 
 count() { # op repeats -> executed instructions of the whole run
@@ -95,3 +141,5 @@ echo "(instructions per tile, float; the loop around the calls is under 1 per ti
 echo
 echo "| curved-mirror patch fit (fit_volume, double, Newton) | $(per_tile fit_volume 1) instructions per fit |"
 echo "|---|---|"
+echo
+frame_table

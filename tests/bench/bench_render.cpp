@@ -793,6 +793,11 @@ std::string cpu_model() {
 }
 
 int run(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--cpu_frame_table" || std::string(argv[i]) == "--dump_frame_scene") {
+            return run_cpu_frame_table(argc, argv); // no GL context
+        }
+    }
     gl::Backend backend = gl::Backend::Egl;
     std::string out_dir;
     bool counts_wanted = true;
@@ -862,6 +867,7 @@ int run(int argc, char** argv) {
         timing = &t;
         register_gpu_benchmarks(t);
         register_cpu_benchmarks();
+        register_cpu_frame_benchmarks();
 
         Collector collector;
         benchmark::RunSpecifiedBenchmarks(&collector);
