@@ -228,6 +228,312 @@ void outline(const render::PixelRect& rect, int height_px) {
         IM_COL32(255, 220, 40, 255), 0.0f, 0, 2.0f);
 }
 
+// One window's frame loop: what it keeps between frames, and step(), one
+// pass of it: input -> cameras -> controls -> mirror pose -> frame -> paint
+// -> panel and help -> screenshot, swap, title.
+class WindowLoop {
+public:
+    WindowLoop(const WindowRequest& request, const std::vector<std::string>& args, WindowSession& session,
+               const std::function<void(std::string_view)>& note)
+        : request_(request), s_(session), note_(note), reporter_{note, note}, controls_(control_scene_),
+          state_(initial_state(request, session)), settings_(request), panel_(args, request),
+          titled_effect_(state_.effect), size_(session.window->framebuffer_size()), shown_effect_(state_.effect),
+          last_frame_(std::chrono::steady_clock::now()) {
+        derive_from_scene();
+    }
+
+    // One pass of the loop; `done` when the window is to close (Esc, or --frames reached).
+    std::optional<Failure> step(bool& done);
+
+    const WindowRun& run() const { return run_; }
+
+private:
+    // What is derived from the scene: at start-up and for each scene file the panel loads.
+    void derive_from_scene();
+    // This pass's events (a --keys key, the panel's share taken out); false: nothing to draw (minimized).
+    bool read_input(std::vector<gl::InputEvent>& events);
+    std::optional<Failure> move_mirror();
+    // Paints the frame; a frame not drawn for this scene or camera keeps the previous effect and says why.
+    std::optional<Failure> paint(window::Frame& frame, bool& painted, double& paint_ms);
+    std::optional<Failure> draw_overlay(const window::Frame& frame, const std::vector<std::string>& help,
+                                        double paint_ms);
+    std::optional<Failure> take_panel_outcome(PanelOutcome outcome);
+    std::optional<Failure> finish_frame(bool& done);
+
+    const WindowRequest& request_;
+    WindowSession& s_;
+    std::function<void(std::string_view)> note_;
+    Reporter reporter_;
+    std::vector<int> attachments_;          // what moves with the mirror
+    window::OrbitProjection projection_;    // the orbit camera's
+    std::vector<std::string> camera_names_; // --camera in the panel: a name, else the index
+    window::ControlScene control_scene_;
+    window::Controls controls_;
+    std::optional<OpenedScene> opened_scene_; // another --scene the panel asked for, loaded by its check
+    window::ViewerState state_;
+    Settings settings_; // what the panel last applied
+    WindowPanel panel_;
+    window::MirrorPose applied_pose_;
+    window::FrameClock clock_;
+    std::optional<double> frame_ms_;
+    render::Effect titled_effect_;
+    gl::FramebufferSize size_;
+    std::optional<render::Cameras> cameras_;
+    WindowRun run_;
+    render::Effect shown_effect_;       // the last effect drawn
+    std::optional<std::string> notice_; // why an effect was refused, in the overlay
+    std::size_t keys_pressed_ = 0;      // of request.keys, one per pass of the loop
+    bool screenshot_asked_ = false;     // the panel's button, saved at the next frame
+    std::chrono::steady_clock::time_point last_frame_;
+};
+
+void WindowLoop::derive_from_scene() {
+    attachments_ = window::mirror_attachments(s_.scene);
+    projection_ = window::orbit_projection(s_.scene, s_.camera_index);
+    camera_names_.clear();
+    for (std::size_t i = 0; i < s_.scene.cameras.size(); ++i) {
+        const std::string& name = s_.scene.cameras[i].name;
+        camera_names_.push_back(name.empty() ? std::to_string(i) : name);
+    }
+    control_scene_ = window::control_scene(s_.scene);
+    controls_ = window::Controls(control_scene_);
+}
+
+bool WindowLoop::read_input(std::vector<gl::InputEvent>& events) {
+    const bool minimized = size_.width_px < 1 || size_.height_px < 1;
+    events = minimized ? s_.window->wait_events() : s_.window->poll_events();
+    if (keys_pressed_ < request_.keys.size()) {
+        events.emplace_back(request_.keys[keys_pressed_++]);
+    }
+    // The framebuffer size (not the window size) sets the frame, its aspect and the tiles.
+    for (const gl::InputEvent& event : events) {
+        if (const auto* resized = std::get_if<gl::FramebufferResized>(&event)) {
+            size_ = {resized->width_px, resized->height_px};
+            cameras_.reset();
+        }
+    }
+    if (size_.width_px < 1 || size_.height_px < 1) {
+        return false;
+    }
+    // The panel takes the mouse while the pointer is over it.
+    events = s_.imgui->feed(std::move(events), state_.show_panel);
+    return true;
+}
+
+std::optional<Failure> WindowLoop::move_mirror() {
+    if (s_.scene.mirror && state_.mirror != applied_pose_) {
+        if (auto moved = s_.renderer->move_mirror(window::mirror_motion(*s_.scene.mirror, state_.mirror), attachments_);
+            !moved) {
+            return runtime(moved.error());
+        }
+        applied_pose_ = state_.mirror;
+    }
+    return std::nullopt;
+}
+
+std::optional<Failure> WindowLoop::paint(window::Frame& frame, bool& painted, double& paint_ms) {
+    const auto paint_start = std::chrono::steady_clock::now();
+    s_.timer->begin();
+    s_.fragments->begin();
+    frame.options.pass_end = [this](const char* pass) {
+        s_.timer->mark(pass);
+        s_.fragments->mark(pass);
+    };
+    // An explicit value this scene cannot take (resolve_effects()): only its effect is refused.
+    frustum::Status status = frame.effect == render::Effect::Curved && s_.effects.refused
+                                 ? frustum::Status(frustum::Error{*s_.effects.refused})
+                                 : s_.painter->paint(*s_.renderer, frame, size_.width_px, size_.height_px);
+    s_.fragments->end();
+    s_.timer->end();
+    paint_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - paint_start).count();
+    painted = status.ok();
+    if (!painted) {
+        // Not for this scene or camera: keep the previous effect (plain
+        // when that one fails now too, then no inset), say why, go on.
+        const std::string name(render::to_string(frame.effect));
+        if (frame.effect == render::Effect::Plain && !frame.inset) {
+            return runtime(status.error());
+        }
+        if (frame.effect != shown_effect_) {
+            state_.effect = shown_effect_;
+        } else if (frame.effect != render::Effect::Plain) {
+            state_.effect = render::Effect::Plain;
+        } else {
+            state_.show_inset = false;
+        }
+        notice_ = (frame.effect == render::Effect::Plain ? std::string("inset") : "effect " + name) +
+                  " not drawn: " + status.error() + "; showing " + std::string(render::to_string(state_.effect));
+        note_(*notice_);
+        return std::nullopt;
+    }
+    if (state_.effect != shown_effect_) {
+        notice_.reset(); // a new effect was drawn: the old reason no longer applies
+    }
+    shown_effect_ = state_.effect;
+    return std::nullopt;
+}
+
+std::optional<Failure> WindowLoop::draw_overlay(const window::Frame& frame, const std::vector<std::string>& help,
+                                                double paint_ms) {
+    // The panel and the help over the frame (nothing at all when both are hidden).
+    if (!state_.show_panel && help.empty()) {
+        return std::nullopt;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    s_.imgui->begin_frame(size_.width_px, size_.height_px, std::chrono::duration<double>(now - last_frame_).count());
+    last_frame_ = now;
+    if (!help.empty()) {
+        draw_help(help, state_.show_panel);
+    }
+    if (state_.show_panel) {
+        const window::LiveNumbers numbers = window::live_numbers(frame, s_.scene);
+        PanelView view;
+        view.numbers = &numbers;
+        view.gpu_ms = s_.timer->last_ms();
+        view.gpu_passes = s_.timer->last_passes();
+        view.gpu_timer_available = s_.timer->available();
+        view.fragment_passes = s_.fragments->last_passes();
+        view.fragments_unavailable = s_.fragments->unavailable_reason();
+        view.paint_cpu_ms = paint_ms;
+        view.notice = notice_;
+        view.mirror_size_m = control_scene_.mirror_size_m;
+        view.scene_radius_m = window::bounds_radius(s_.scene.world_bounds);
+        view.camera_names = camera_names_;
+        view.check = [this](const Settings& next) -> std::optional<std::string> {
+            if (auto samples = gl::choose_samples(*s_.fn, next.msaa_samples); !samples) {
+                return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
+            }
+            if (next.scene_path != settings_.scene_path) {
+                auto opened = open_scene(s_, next);
+                if (auto* error = std::get_if<std::string>(&opened)) {
+                    return *error;
+                }
+                opened_scene_.emplace(std::move(std::get<OpenedScene>(opened)));
+            }
+            return std::nullopt;
+        };
+        PanelOutcome outcome = panel_.draw(state_, view);
+        const bool mirror_shown = frame.effect == render::Effect::Mirror || frame.effect == render::Effect::Curved;
+        if (numbers.mirror_rect && mirror_shown && !frame.stereo) {
+            outline(*numbers.mirror_rect, size_.height_px);
+        }
+        if (auto failure = take_panel_outcome(std::move(outcome))) {
+            return failure;
+        }
+    }
+    if (auto drawn = s_.imgui->end_frame(); !drawn) {
+        return runtime(drawn.error());
+    }
+    return std::nullopt;
+}
+
+std::optional<Failure> WindowLoop::take_panel_outcome(PanelOutcome outcome) {
+    if (outcome.settings && opened_scene_) {
+        // The new scene: its camera framed anew, the mirror and the facing mirrors where it puts them.
+        take_scene(s_, std::move(*opened_scene_), reporter_);
+        opened_scene_.reset();
+        derive_from_scene();
+        state_.orbit.reset();
+        state_.mirror = {};
+        applied_pose_ = {};
+        state_.link_moves = window::ViewerState{}.link_moves;
+    }
+    if (outcome.settings) {
+        if (outcome.settings->camera != settings_.camera) {
+            // Another scene camera: found as at start-up (render::find_camera), the orbit dropped.
+            auto index = render::find_camera(s_.scene, outcome.settings->camera);
+            if (!index) {
+                return runtime(index.error());
+            }
+            s_.camera_index = *index;
+            projection_ = window::orbit_projection(s_.scene, s_.camera_index);
+            state_.orbit.reset();
+        }
+        settings_ = std::move(*outcome.settings);
+        take_settings(mirror_kept(settings_), s_, state_);
+        cameras_.reset(); // --stereo may have changed the eye's width
+        notice_.reset();
+    }
+    screenshot_asked_ = screenshot_asked_ || outcome.screenshot;
+    return std::nullopt;
+}
+
+std::optional<Failure> WindowLoop::finish_frame(bool& done) {
+    ++run_.frames_drawn;
+    const bool last = request_.frames && run_.frames_drawn >= *request_.frames;
+    if ((last && request_.screenshot) || (screenshot_asked_ && !request_.frames)) {
+        const std::string path = request_.screenshot.value_or(kPanelScreenshot);
+        if (auto saved = save_screenshot(*s_.fn, size_, path); !saved) {
+            return runtime(saved.error());
+        }
+        if (!last) {
+            note_("screenshot: " + path);
+        }
+        run_.written_paths.push_back(path);
+        screenshot_asked_ = false;
+    }
+    s_.window->swap_buffers();
+    if (auto mean = clock_.tick(std::chrono::steady_clock::now()); mean || titled_effect_ != state_.effect) {
+        frame_ms_ = mean ? mean : frame_ms_;
+        titled_effect_ = state_.effect;
+        s_.window->set_title(window::window_title(state_.effect, frame_ms_));
+    }
+    done = last;
+    return std::nullopt;
+}
+
+std::optional<Failure> WindowLoop::step(bool& done) {
+    done = s_.window->should_close();
+    std::vector<gl::InputEvent> events;
+    if (done || !read_input(events)) {
+        return std::nullopt;
+    }
+    // Stereo: cameras, frame and options are one eye's, half the width.
+    const int eye_width_px = settings_.stereo ? std::max(1, size_.width_px / 2) : size_.width_px;
+    if (!cameras_) {
+        auto made = render::make_cameras(s_.scene, s_.camera_index, eye_width_px, size_.height_px);
+        if (!made) {
+            return runtime(made.error());
+        }
+        cameras_ = std::move(*made);
+    }
+    for (const gl::InputEvent& event : events) {
+        controls_.apply(event, cameras_->main.pair, state_);
+    }
+    if (state_.quit) {
+        s_.window->request_close();
+        done = true;
+        return std::nullopt;
+    }
+    if (auto failure = move_mirror()) {
+        return failure;
+    }
+    auto frame = window::make_frame(state_, *cameras_, projection_, s_.scene.world_bounds, eye_width_px,
+                                    size_.height_px);
+    if (!frame) {
+        return runtime(frame.error());
+    }
+    frame->stereo = render::stereo_rig(settings_, frame->cameras.main.pair, s_.scene);
+    if (notice_ && !state_.show_panel) {
+        frame->text.insert(frame->text.begin(), *notice_);
+    }
+    // The help goes into an ImGui window (draw_overlay()), not the painter's text panel.
+    const std::vector<std::string> help = std::move(frame->text);
+    frame->text.clear();
+    bool painted = false;
+    double paint_ms = 0.0;
+    if (auto failure = paint(*frame, painted, paint_ms)) {
+        return failure;
+    }
+    if (!painted) {
+        return std::nullopt;
+    }
+    if (auto failure = draw_overlay(*frame, help, paint_ms)) {
+        return failure;
+    }
+    return finish_frame(done);
+}
+
 } // namespace
 
 std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const std::vector<std::string>& args,
@@ -236,232 +542,13 @@ std::variant<WindowRun, Failure> run_window(const WindowRequest& request, const 
     if (auto* failure = std::get_if<Failure>(&opened)) {
         return *failure;
     }
-    WindowSession& s = *std::get<std::unique_ptr<WindowSession>>(opened);
-    const Reporter reporter{note, note};
-    // What is derived from the scene: at start-up and for each scene file the panel loads.
-    std::vector<int> attachments;           // what moves with the mirror
-    window::OrbitProjection projection;     // the orbit camera's
-    std::vector<std::string> camera_names;  // --camera in the panel: a name, else the index
-    window::ControlScene control_scene;
-    window::Controls controls(control_scene);
-    const auto derive_from_scene = [&] {
-        attachments = window::mirror_attachments(s.scene);
-        projection = window::orbit_projection(s.scene, s.camera_index);
-        camera_names.clear();
-        for (std::size_t i = 0; i < s.scene.cameras.size(); ++i) {
-            const std::string& name = s.scene.cameras[i].name;
-            camera_names.push_back(name.empty() ? std::to_string(i) : name);
-        }
-        control_scene = window::control_scene(s.scene);
-        controls = window::Controls(control_scene);
-    };
-    derive_from_scene();
-    std::optional<OpenedScene> opened_scene; // another --scene the panel asked for, loaded by its check
-    window::ViewerState state = initial_state(request, s);
-    Settings settings = request; // what the panel last applied
-    WindowPanel panel(args, request);
-    window::MirrorPose applied_pose;
-    window::FrameClock clock;
-    std::optional<double> frame_ms;
-    render::Effect titled_effect = state.effect;
-    gl::FramebufferSize size = s.window->framebuffer_size();
-    std::optional<render::Cameras> cameras;
-    WindowRun run;
-    render::Effect shown_effect = state.effect; // the last effect drawn
-    std::optional<std::string> notice;          // why an effect was refused, in the overlay
-    std::size_t keys_pressed = 0;               // of request.keys, one per pass of the loop
-    bool screenshot_asked = false;              // the panel's button, saved at the next frame
-    auto last_frame = std::chrono::steady_clock::now();
-
-    while (!s.window->should_close()) {
-        const bool minimized = size.width_px < 1 || size.height_px < 1;
-        std::vector<gl::InputEvent> events = minimized ? s.window->wait_events() : s.window->poll_events();
-        if (keys_pressed < request.keys.size()) {
-            events.emplace_back(request.keys[keys_pressed++]);
-        }
-        // The framebuffer size (not the window size) sets the frame, its aspect and the tiles.
-        for (const gl::InputEvent& event : events) {
-            if (const auto* resized = std::get_if<gl::FramebufferResized>(&event)) {
-                size = {resized->width_px, resized->height_px};
-                cameras.reset();
-            }
-        }
-        if (size.width_px < 1 || size.height_px < 1) {
-            continue;
-        }
-        // The panel takes the mouse while the pointer is over it.
-        events = s.imgui->feed(std::move(events), state.show_panel);
-        // Stereo: cameras, frame and options are one eye's, half the width.
-        const int eye_width_px = settings.stereo ? std::max(1, size.width_px / 2) : size.width_px;
-        if (!cameras) {
-            auto made = render::make_cameras(s.scene, s.camera_index, eye_width_px, size.height_px);
-            if (!made) {
-                return runtime(made.error());
-            }
-            cameras = std::move(*made);
-        }
-        for (const gl::InputEvent& event : events) {
-            controls.apply(event, cameras->main.pair, state);
-        }
-        if (state.quit) {
-            s.window->request_close();
-            break;
-        }
-        if (s.scene.mirror && state.mirror != applied_pose) {
-            if (auto moved = s.renderer->move_mirror(window::mirror_motion(*s.scene.mirror, state.mirror), attachments);
-                !moved) {
-                return runtime(moved.error());
-            }
-            applied_pose = state.mirror;
-        }
-        auto frame = window::make_frame(state, *cameras, projection, s.scene.world_bounds, eye_width_px,
-                                        size.height_px);
-        if (!frame) {
-            return runtime(frame.error());
-        }
-        frame->stereo = render::stereo_rig(settings, frame->cameras.main.pair, s.scene);
-        if (notice && !state.show_panel) {
-            frame->text.insert(frame->text.begin(), *notice);
-        }
-        // The help goes into an ImGui window (below), not the painter's text panel.
-        const std::vector<std::string> help = std::move(frame->text);
-        frame->text.clear();
-        const auto paint_start = std::chrono::steady_clock::now();
-        s.timer->begin();
-        s.fragments->begin();
-        frame->options.pass_end = [&s](const char* pass) {
-            s.timer->mark(pass);
-            s.fragments->mark(pass);
-        };
-        // An explicit value this scene cannot take (resolve_effects()): only its effect is refused.
-        frustum::Status painted = frame->effect == render::Effect::Curved && s.effects.refused
-                                      ? frustum::Status(frustum::Error{*s.effects.refused})
-                                      : s.painter->paint(*s.renderer, *frame, size.width_px, size.height_px);
-        s.fragments->end();
-        s.timer->end();
-        const double paint_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - paint_start).count();
-        if (!painted) {
-            // Not for this scene or camera: keep the previous effect (plain
-            // when that one fails now too, then no inset), say why, go on.
-            const std::string name(render::to_string(frame->effect));
-            if (frame->effect == render::Effect::Plain && !frame->inset) {
-                return runtime(painted.error());
-            }
-            if (frame->effect != shown_effect) {
-                state.effect = shown_effect;
-            } else if (frame->effect != render::Effect::Plain) {
-                state.effect = render::Effect::Plain;
-            } else {
-                state.show_inset = false;
-            }
-            notice = (frame->effect == render::Effect::Plain ? std::string("inset") : "effect " + name) +
-                     " not drawn: " + painted.error() + "; showing " + std::string(render::to_string(state.effect));
-            note(*notice);
-            continue;
-        }
-        if (state.effect != shown_effect) {
-            notice.reset(); // a new effect was drawn: the old reason no longer applies
-        }
-        shown_effect = state.effect;
-        // The panel and the help over the frame (nothing at all when both are hidden).
-        if (state.show_panel || !help.empty()) {
-            const auto now = std::chrono::steady_clock::now();
-            s.imgui->begin_frame(size.width_px, size.height_px,
-                                 std::chrono::duration<double>(now - last_frame).count());
-            last_frame = now;
-            if (!help.empty()) {
-                draw_help(help, state.show_panel);
-            }
-            if (state.show_panel) {
-                const window::LiveNumbers numbers = window::live_numbers(*frame, s.scene);
-                PanelView view;
-                view.numbers = &numbers;
-                view.gpu_ms = s.timer->last_ms();
-                view.gpu_passes = s.timer->last_passes();
-                view.gpu_timer_available = s.timer->available();
-                view.fragment_passes = s.fragments->last_passes();
-                view.fragments_unavailable = s.fragments->unavailable_reason();
-                view.paint_cpu_ms = paint_ms;
-                view.notice = notice;
-                view.mirror_size_m = control_scene.mirror_size_m;
-                view.scene_radius_m = window::bounds_radius(s.scene.world_bounds);
-                view.camera_names = camera_names;
-                view.check = [&](const Settings& next) -> std::optional<std::string> {
-                    if (auto samples = gl::choose_samples(*s.fn, next.msaa_samples); !samples) {
-                        return "--msaa " + std::to_string(next.msaa_samples) + ": " + samples.error();
-                    }
-                    if (next.scene_path != settings.scene_path) {
-                        auto opened = open_scene(s, next);
-                        if (auto* error = std::get_if<std::string>(&opened)) {
-                            return *error;
-                        }
-                        opened_scene.emplace(std::move(std::get<OpenedScene>(opened)));
-                    }
-                    return std::nullopt;
-                };
-                PanelOutcome outcome = panel.draw(state, view);
-                const bool mirror_shown = frame->effect == render::Effect::Mirror ||
-                                          frame->effect == render::Effect::Curved;
-                if (numbers.mirror_rect && mirror_shown && !frame->stereo) {
-                    outline(*numbers.mirror_rect, size.height_px);
-                }
-                if (outcome.settings && opened_scene) {
-                    // The new scene: its camera framed anew, the mirror and the facing mirrors where it puts them.
-                    take_scene(s, std::move(*opened_scene), reporter);
-                    opened_scene.reset();
-                    derive_from_scene();
-                    state.orbit.reset();
-                    state.mirror = {};
-                    applied_pose = {};
-                    state.link_moves = window::ViewerState{}.link_moves;
-                }
-                if (outcome.settings) {
-                    if (outcome.settings->camera != settings.camera) {
-                        // Another scene camera: found as at start-up (render::find_camera), the orbit dropped.
-                        auto index = render::find_camera(s.scene, outcome.settings->camera);
-                        if (!index) {
-                            return runtime(index.error());
-                        }
-                        s.camera_index = *index;
-                        projection = window::orbit_projection(s.scene, s.camera_index);
-                        state.orbit.reset();
-                    }
-                    settings = std::move(*outcome.settings);
-                    take_settings(mirror_kept(settings), s, state);
-                    cameras.reset(); // --stereo may have changed the eye's width
-                    notice.reset();
-                }
-                screenshot_asked = screenshot_asked || outcome.screenshot;
-            }
-            if (auto drawn = s.imgui->end_frame(); !drawn) {
-                return runtime(drawn.error());
-            }
-        }
-        ++run.frames_drawn;
-        const bool last = request.frames && run.frames_drawn >= *request.frames;
-        if ((last && request.screenshot) || (screenshot_asked && !request.frames)) {
-            const std::string path = request.screenshot.value_or(kPanelScreenshot);
-            if (auto saved = save_screenshot(*s.fn, size, path); !saved) {
-                return runtime(saved.error());
-            }
-            if (!last) {
-                note("screenshot: " + path);
-            }
-            run.written_paths.push_back(path);
-            screenshot_asked = false;
-        }
-        s.window->swap_buffers();
-        if (auto mean = clock.tick(std::chrono::steady_clock::now()); mean || titled_effect != state.effect) {
-            frame_ms = mean ? mean : frame_ms;
-            titled_effect = state.effect;
-            s.window->set_title(window::window_title(state.effect, frame_ms));
-        }
-        if (last) {
-            break;
+    WindowLoop loop(request, args, *std::get<std::unique_ptr<WindowSession>>(opened), note);
+    for (bool done = false; !done;) {
+        if (auto failure = loop.step(done)) {
+            return *failure;
         }
     }
-    return run;
+    return loop.run();
 }
 
 } // namespace demo
