@@ -207,7 +207,6 @@ Status lens_tiles(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px
                              !detail::lens_tile_rows(columns_relative, shared, rows_relative)) {
                              return false;
                          }
-                         detail::lens_tile_match_row2(rows_relative, shared, columns_relative);
                          if (matrices == nullptr) {
                              matrices = TileGridWriter::matrices(out);
                              inverses = TileGridWriter::inverses(out);

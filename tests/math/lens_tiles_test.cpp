@@ -226,11 +226,13 @@ TEST_CASE_TEMPLATE("lens_tiles into a TileGrid: the vector form bit for bit, the
     } grids[] = {{64, 64, 1, 1}, {64, 48, 3, 2}, {256, 256, 8, 8}, {1280, 720, 7, 5}, {1280, 720, 32, 32}};
     // Float: near corners within 2e-5 of the double plane construction's
     // (about 170 eps), residual |M M^-1 - I| within 128 eps (32 x 32 tiles:
-    // 1.0e-5 measured), the baseline's M within 1e-4 (its m3 sums planes of
-    // nearly opposite normals: a tile's width cancels).
+    // 1.0e-5 measured), the re-inverting baseline's M within 2e-3 (its m3
+    // sums planes of nearly opposite normals, so a tile's width cancels:
+    // below 1e-4 on x86-64, 7.2e-4 measured on aarch64 with FMA contraction
+    // at 32 x 32 tiles; the baseline is the benchmark's, not the product's).
     const double corner_tolerance = std::is_same_v<T, float> ? 2e-5 : 1e-12;
     const double residual_tolerance = std::is_same_v<T, float> ? 128 * 1.2e-7 : 128 * 2.3e-16;
-    const double baseline_tolerance = std::is_same_v<T, float> ? 1e-4 : 1e-11;
+    const double baseline_tolerance = std::is_same_v<T, float> ? 2e-3 : 1e-11;
     for (DepthRange depth : mtest::all_depth_ranges) {
         const MatrixPair<double> camera_d = lens_camera(depth);
         const MatrixPair<T> camera = camera_d.template cast<T>();

@@ -163,20 +163,6 @@ FRUSTUM_LENS_INLINE inline bool lens_tile_rows(const V4<T>* c, const LensTileSha
     return true;
 }
 
-// The w of c0, c1, c3 from row 2: m2 . c_j = 0, i.e. c_j_w = -(m2.xyz .
-// c_j.xyz) / m2_w, m2_w = beta N_w = 1 / lambda (the rows m0, m1, m3 have
-// w = 0 and do not see it). The w the corners gave agree with these in
-// exact arithmetic; these agree with M as rounded (docs/performance.md).
-template <class T>
-FRUSTUM_LENS_INLINE inline void lens_tile_match_row2(const Cols<T>& rows, const LensTileShared<T>& shared, V4<T>* c) {
-    const V4<T> xyz{T(1), T(1), T(1), T(0)};
-    const V4<T> m2 = rows.c[2] * xyz;
-    for (int j : {0, 1, 3}) {
-        const T w = -dot<T>(m2, c[j] * xyz) * shared.lambda;
-        c[j] = c[j] * xyz + V4<T>{T(0), T(0), T(0), w};
-    }
-}
-
 // The same rows from the edge planes alone (§4, eq. 10 up to each plane's
 // scale; the forward construction a re-inverting baseline starts from):
 // m3 + m0 = a_L L, m3 - m0 = a_R R, m3 + m1 = a_B B, m3 - m1 = a_T T, with
