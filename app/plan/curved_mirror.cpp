@@ -58,9 +58,8 @@ frustum::Result<frustum::MatrixPair<double>> covering_scene(const frustum::Matri
     bool clipped = false;
     std::optional<glm::dvec3> farthest;
     double smallest_ratio = std::numeric_limits<double>::infinity();
-    for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 corner((c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
-                                (c & 4) ? bounds.max.z : bounds.min.z);
+    for (const glm::vec3& corner_f : scene::corners(bounds)) {
+        const glm::dvec3 corner(corner_f);
         const double w = glm::dot(m3, glm::dvec4(corner, 1.0));
         const double beyond = near.distance(corner);
         if (!(w > 0.0 && beyond > 0.0)) {

@@ -89,9 +89,7 @@ glm::ivec2 rectangle_texture_size(const scene::MirrorRect& mirror, const frustum
 // as seen from the reflected eye (1% and 1 cm of margin).
 float reach_m(const scene::Bounds& bounds, const glm::vec3& from) {
     float farthest_m = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z);
+    for (const glm::vec3& corner : scene::corners(bounds)) {
         farthest_m = std::max(farthest_m, glm::distance(from, corner));
     }
     return farthest_m * 1.01f + 0.01f;

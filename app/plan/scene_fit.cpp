@@ -148,10 +148,7 @@ float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape, const scene
     // of its bounds along the reflecting side's normal.
     const glm::vec3 n = glm::normalize(glm::cross(mirror.a1, mirror.a2));
     float reach_m = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? model_bounds.max.x : model_bounds.min.x,
-                               (i & 2) ? model_bounds.max.y : model_bounds.min.y,
-                               (i & 4) ? model_bounds.max.z : model_bounds.min.z);
+    for (const glm::vec3& corner : scene::corners(model_bounds)) {
         reach_m = std::max(reach_m, glm::dot(corner - mirror.corner, n));
     }
     return reach_m > 0.0f ? std::min(by_size_m, kSagittaPerModelReach * reach_m) : by_size_m;

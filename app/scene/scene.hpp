@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -110,6 +112,16 @@ struct Bounds {
     glm::vec3 min{0.0f};
     glm::vec3 max{0.0f};
 };
+
+// The bounds' eight corners, corner i taking max along x, y, z where bits 0, 1, 2 of i are set.
+inline std::array<glm::vec3, 8> corners(const Bounds& b) {
+    std::array<glm::vec3, 8> out{};
+    for (int i = 0; i < 8; ++i) {
+        out[static_cast<std::size_t>(i)] = glm::vec3((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                                                     (i & 4) ? b.max.z : b.min.z);
+    }
+    return out;
+}
 
 struct Scene {
     // Decoded RGBA8, rows top to bottom as in the file; empty (0 x 0) where
