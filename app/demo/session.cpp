@@ -56,7 +56,7 @@ std::optional<Failure> Session::open(const Settings& settings, const Reporter& r
         cameras.emplace(std::move(*made));
     }
     // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
-    effects = render::resolve_effects(settings, scene, settings.width_px, settings.height_px);
+    effects = render::resolve_effects(settings, scene);
     if (effects.placed) {
         reporter.note(*effects.placed);
     }

@@ -121,7 +121,7 @@ window::ViewerState initial_state(const WindowRequest& request, const WindowSess
 // session's scene as at start-up (render::resolve_effects()), the mirror
 // left where the scene has it (mirror_kept()), into the viewer state.
 void take_settings(const Settings& settings, WindowSession& s, window::ViewerState& state) {
-    s.effects = render::resolve_effects(settings, s.scene, settings.width_px, settings.height_px);
+    s.effects = render::resolve_effects(settings, s.scene);
     hold(s.effects.params, settings, state);
 }
 

@@ -2,11 +2,10 @@
 
 #include "plan/number_text.hpp"
 
-#include <algorithm>
 
 namespace render {
 
-ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene, int width_px, int height_px) {
+ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene) {
     ResolvedEffects resolved{params, place_mirror(scene, params.mirror_place), std::nullopt};
     EffectParams& p = resolved.params;
     if (scene.mirror) {
@@ -18,7 +17,6 @@ ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene,
                                number_text(limit_m) + "] m for this mirror (half the distance from its centre to its rim)";
         }
     }
-    p.lens_grid = std::max(1, std::min(p.lens_grid, std::min(width_px, height_px)));
     return resolved;
 }
 

@@ -42,7 +42,7 @@ struct EffectParams {
 
 // What resolve_effects() derived for a scene and a frame size.
 struct ResolvedEffects {
-    EffectParams params;               // the sagitta fitted when it was not given, the lens grid within the frame
+    EffectParams params;               // the sagitta fitted when it was not given
     std::optional<std::string> placed; // where the mirror went ("mirror: floor under the model, ..."); empty: the scene's
     // An explicit value that cannot work for this scene, as the usage error
     // naming it (an explicit --sagitta above what the mirror allows): render
@@ -51,13 +51,14 @@ struct ResolvedEffects {
 };
 
 // Gives `scene` the mirror params.mirror_place asks for (a floor when the
-// scene has none) and derives what params leave unset for a width_px x
-// height_px frame: the curved mirror's sagitta (fit_sagitta_m()); the lens
-// grid at most one tile per pixel of the smaller side. `refused` names an
-// explicit --sagitta above what the mirror allows (max_sagitta_m()). The
-// one route from the options to a frame: render, the window (at start-up,
-// for each panel change and each scene file) and the reports call it.
-ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene, int width_px, int height_px);
+// scene has none) and derives what params leave unset: the curved mirror's
+// sagitta (fit_sagitta_m()). `refused` names an explicit --sagitta above
+// what the mirror allows (max_sagitta_m()). The one route from the options
+// to a frame: render, the window (at start-up, for each panel change and
+// each scene file) and the reports call it. (Counts per pixel are the
+// frame's: render refuses a --tiles or --lens-grid its --size cannot hold,
+// the window's frame caps them at each framebuffer size, window/frame.hpp.)
+ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene);
 
 // The stereo rig params ask for, the convergence derived from the scene's
 // mirror and bounds as seen from `camera` when unset; empty without stereo.

@@ -59,7 +59,7 @@ struct FrameSetup {
 const FrameSetup& setup() {
     static const FrameSetup s = [] {
         FrameSetup out{showcase(), {}, 0, render::WorldGeometry::in_object_space(showcase())};
-        const render::ResolvedEffects resolved = render::resolve_effects(render::EffectParams{}, out.scene, kW, kH);
+        const render::ResolvedEffects resolved = render::resolve_effects(render::EffectParams{}, out.scene);
         if (resolved.refused) {
             throw std::runtime_error("cpu/frame: " + *resolved.refused);
         }
