@@ -61,24 +61,7 @@ TEST_CASE("every sample loads with the expected mesh and instance counts") {
     for (const Expected& expected : samples) {
         CAPTURE(expected.model);
         const scene::Scene s = load_ok(sample(*folder, expected.model));
-        CHECK(s.meshes.size() == expected.meshes);
-        CHECK(s.instances.size() == expected.instances);
-        CHECK(s.cameras.size() == expected.cameras);
-        CHECK(s.images.size() == expected.images);
-        CHECK_FALSE(s.mirror.has_value());
-        CHECK_FALSE(s.lens.has_value());
-        for (const scene::Mesh& mesh : s.meshes) {
-            for (const scene::Primitive& primitive : mesh.primitives) {
-                CHECK_FALSE(primitive.positions.empty());
-                CHECK_FALSE(primitive.indices.empty());
-                CHECK((primitive.normals.empty() || primitive.normals.size() == primitive.positions.size()));
-                CHECK((primitive.colors.empty() || primitive.colors.size() == primitive.positions.size()));
-                CHECK((primitive.texcoords.empty() || primitive.texcoords.size() == primitive.positions.size()));
-                for (std::uint32_t index : primitive.indices) {
-                    REQUIRE(index < primitive.positions.size());
-                }
-            }
-        }
+        scene_test::check_loaded_shape(s, {expected.meshes, expected.instances, expected.cameras, expected.images});
         CHECK(s.world_bounds.min.x <= s.world_bounds.max.x);
     }
 }

@@ -11,6 +11,8 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace scene_test {
@@ -33,6 +35,34 @@ inline bool near(const glm::mat4& a, const glm::mat4& b, float tolerance) {
         }
     }
     return true;
+}
+
+// What every loaded scene must be: `meshes`, `instances`, `cameras` and
+// `images` of each, no mirror or lens node, and every primitive drawable
+// (positions and indices, attributes of the positions' count, indices in range).
+struct Counts {
+    std::size_t meshes, instances, cameras, images;
+};
+
+inline void check_loaded_shape(const scene::Scene& s, const Counts& expected) {
+    CHECK(s.meshes.size() == expected.meshes);
+    CHECK(s.instances.size() == expected.instances);
+    CHECK(s.cameras.size() == expected.cameras);
+    CHECK(s.images.size() == expected.images);
+    CHECK_FALSE(s.mirror.has_value());
+    CHECK_FALSE(s.lens.has_value());
+    for (const scene::Mesh& mesh : s.meshes) {
+        for (const scene::Primitive& primitive : mesh.primitives) {
+            CHECK_FALSE(primitive.positions.empty());
+            CHECK_FALSE(primitive.indices.empty());
+            CHECK((primitive.normals.empty() || primitive.normals.size() == primitive.positions.size()));
+            CHECK((primitive.colors.empty() || primitive.colors.size() == primitive.positions.size()));
+            CHECK((primitive.texcoords.empty() || primitive.texcoords.size() == primitive.positions.size()));
+            for (std::uint32_t index : primitive.indices) {
+                REQUIRE(index < primitive.positions.size());
+            }
+        }
+    }
 }
 
 inline const scene::Instance& instance_named(const scene::Scene& s, const std::string& name) {
