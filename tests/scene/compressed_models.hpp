@@ -7,6 +7,9 @@
 // both use it. Test-only code.
 #pragma once
 
+#include "../skips.hpp"
+
+#include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
@@ -106,6 +109,19 @@ inline std::optional<std::filesystem::path> make(const Variant& variant, const s
         return std::nullopt;
     }
     return out;
+}
+
+// make() as the tests use it: a missing tool is a skip (tests/skips.hpp)
+// named after `what`, a tool that fails is a failure of the test.
+inline std::optional<std::filesystem::path> make_or_skip(const Variant& variant, const std::filesystem::path& dir,
+                                                         const std::string& what) {
+    std::string missing;
+    auto path = make(variant, dir, missing);
+    if (!path) {
+        REQUIRE_MESSAGE(!missing.empty(), variant.tool << " failed to write " << variant.file);
+        test_skips::skip(what + ": " + missing);
+    }
+    return path;
 }
 
 } // namespace compressed_models
