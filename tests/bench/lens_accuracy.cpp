@@ -31,22 +31,7 @@ using frustum::MatrixPair;
 using frustum::Vec2;
 using frustum::Vec3;
 using frustum::Vec4;
-
-double pair_residual(const Mat4<float>& m, const Mat4<float>& inv) {
-    const glm::dmat4 md(m), id(inv);
-    double worst = 0.0;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            double product = 0.0, scale = 0.0;
-            for (int k = 0; k < 4; ++k) {
-                product += md[k][r] * id[c][k];
-                scale += std::abs(md[k][r] * id[c][k]);
-            }
-            worst = std::max(worst, std::abs(product - (c == r ? 1.0 : 0.0)) / scale);
-        }
-    }
-    return worst;
-}
+using bench::pair_residual;
 
 // Tile (x0..x1, y0..y1) px built alone in double (lens_tile_alone of
 // tests/math/lens_tiles_test.cpp: the construction lens_tiles had before

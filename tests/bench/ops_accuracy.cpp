@@ -27,27 +27,7 @@ using frustum::MatrixPair;
 using frustum::Plane;
 
 using bench::column_error;
-
-// How well a float pair agrees with itself: the componentwise residual
-// max_ij |(M inv - I)_ij| / (|M| |inv|)_ij, computed in double. A float
-// matrix and its glm::inverse agree by construction (a few eps); an
-// analytically updated inverse tracks the exact operation instead, so it
-// agrees with its own rounded M a little less.
-double pair_residual(const Mat4<float>& m, const Mat4<float>& inv) {
-    const glm::dmat4 md(m), id(inv);
-    double worst = 0.0;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            double product = 0.0, scale = 0.0;
-            for (int k = 0; k < 4; ++k) {
-                product += md[k][r] * id[c][k];
-                scale += std::abs(md[k][r] * id[c][k]);
-            }
-            worst = std::max(worst, std::abs(product - (c == r ? 1.0 : 0.0)) / scale);
-        }
-    }
-    return worst;
-}
+using bench::pair_residual;
 
 using bench::Stats;
 
