@@ -9,7 +9,6 @@
 
 #include <doctest/doctest.h>
 
-#include <gl/context.hpp>
 
 #include <filesystem>
 #include <functional>
@@ -151,20 +150,6 @@ std::string joined(const std::vector<std::string>& names) {
     return text;
 }
 
-// True (after recording a skip) when this machine has no offscreen GL
-// context, asked in-process the way frustum-demo asks (EGL, else OSMesa)
-// before the run, so that the run's own errors are never mistaken for it.
-bool no_gl() {
-    static const std::string why_not = [] {
-        const auto context = gl::create_offscreen_context_with_fallback({});
-        return context.ok() ? std::string() : context.error();
-    }();
-    if (!why_not.empty()) {
-        test_skips::skip(why_not);
-    }
-    return !why_not.empty();
-}
-
 } // namespace
 
 TEST_SUITE("robustness") {
@@ -195,7 +180,7 @@ TEST_CASE("frustum-demo: an effect of several that fails leaves the others and t
     support::TempDir dir;
     support::Launch launch;
     launch.args = {"render", "--pivot", "900", "--size", "64x36", "--out", (dir / "out").string()};
-    if (no_gl()) return;
+    if (rob::no_gl()) return;
     const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.exit_status == 1);
@@ -215,7 +200,7 @@ TEST_CASE("frustum-demo: a write that fails midway (file size limit) leaves no P
     support::Launch launch;
     launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
     launch.file_size_limit_bytes = 4096; // the PNG is larger: write() fails with EFBIG
-    if (no_gl()) return;
+    if (rob::no_gl()) return;
     const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.signal == 0);
@@ -232,7 +217,7 @@ TEST_CASE("frustum-demo: killed in the middle of a write, no partial PNG under t
     launch.args = {"render", "--effect", "plain", "--size", "640x360", "--out", (dir / "out").string()};
     launch.file_size_limit_bytes = 4096;
     launch.ignore_sigxfsz = false; // SIGXFSZ kills the process inside write()
-    if (no_gl()) return;
+    if (rob::no_gl()) return;
     const support::Outcome r = support::run(FRUSTUM_DEMO_EXE, launch);
     CAPTURE(r.err);
     CHECK(r.signal == SIGXFSZ);

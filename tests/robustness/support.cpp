@@ -1,6 +1,10 @@
 #include "support.hpp"
 
+#include "../skips.hpp"
+
 #include <doctest/doctest.h>
+
+#include <gl/context.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -55,6 +59,17 @@ Isolated isolated(const std::function<std::string()>& work, unsigned timeout_s) 
     if (WIFSIGNALED(status)) result.how = "killed by signal " + std::to_string(WTERMSIG(status));
     if (WIFEXITED(status) && !result.finished) result.how = "exit status " + std::to_string(WEXITSTATUS(status));
     return result;
+}
+
+bool no_gl() {
+    static const std::string why_not = [] {
+        const auto context = gl::create_offscreen_context_with_fallback({});
+        return context.ok() ? std::string() : context.error();
+    }();
+    if (!why_not.empty()) {
+        test_skips::skip(why_not);
+    }
+    return !why_not.empty();
 }
 
 } // namespace rob

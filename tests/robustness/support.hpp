@@ -28,4 +28,9 @@ struct Isolated {
 };
 Isolated isolated(const std::function<std::string()>& work, unsigned timeout_s = 60);
 
+// True (after recording a skip) when this machine has no offscreen GL
+// context, asked in-process the way frustum-demo asks (EGL, else OSMesa)
+// before a run, so that the run's own errors are never mistaken for it.
+bool no_gl();
+
 } // namespace rob
