@@ -1,89 +1,24 @@
 #include "image/png.hpp"
 
+#include "image/atomic_file.hpp"
+
 // Declarations only: the code is Debian's libstb.so (image/CMakeLists.txt).
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
-#include <atomic>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace image {
 namespace {
 
 std::string errno_text() { return std::strerror(errno); }
 
-// Writes every byte or fails; remembers the first errno.
-struct FdWriter {
-    int fd;
-    int error = 0;
-};
-
-void write_all(void* context, void* data, int size) {
-    auto* writer = static_cast<FdWriter*>(context);
-    const auto* bytes = static_cast<const char*>(data);
-    while (writer->error == 0 && size > 0) {
-        const ssize_t written = ::write(writer->fd, bytes, static_cast<std::size_t>(size));
-        if (written < 0 && errno == EINTR) {
-            continue;
-        }
-        if (written <= 0) {
-            writer->error = written < 0 ? errno : EIO;
-            return;
-        }
-        bytes += written;
-        size -= static_cast<int>(written);
-    }
-}
-
-// Creates a fresh file "<path>.tmp-<pid>-<n>" (O_EXCL, so never someone
-// else's file); on success `temp_path` holds its name.
-frustum::Result<int> create_temporary(const std::string& path, std::string& temp_path) {
-    static std::atomic<unsigned> counter{0};
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        temp_path = path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-        const int fd = ::open(temp_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            return fd;
-        }
-        if (errno != EEXIST) {
-            break;
-        }
-    }
-    return frustum::Error{"image::write_png(): cannot create '" + temp_path + "': " + errno_text()};
-}
-
-// What lstat() found at `path`, for the refusal message.
-const char* kind_of(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISLNK(mode)) return "a symbolic link";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
-// The rename at the end replaces whatever is at `path`: only a regular file
-// (or nothing) may be there, never a device node, FIFO, link or directory.
-frustum::Status check_replaceable(const std::string& path) {
-    struct stat status{};
-    if (::lstat(path.c_str(), &status) != 0) {
-        if (errno == ENOENT) {
-            return {};
-        }
-        return frustum::Error{"image::write_png(): cannot inspect '" + path + "': " + errno_text()};
-    }
-    if (!S_ISREG(status.st_mode)) {
-        return frustum::Error{"image::write_png(): '" + path + "' is " + kind_of(status.st_mode) +
-                              ", not a regular file; refusing to replace it"};
-    }
-    return {};
+// stb_image_write hands the encoded bytes to this callback.
+void write_to(void* context, void* data, int size) {
+    static_cast<AtomicFile*>(context)->write(data, static_cast<std::size_t>(size));
 }
 
 // stb_image_write computes row and image sizes in int: (width*4+1)*height
@@ -108,36 +43,13 @@ frustum::Status write_png(const Image& image, const std::string& path) {
     if (auto encodable = check_encodable(image); !encodable) {
         return encodable;
     }
-    if (auto replaceable = check_replaceable(path); !replaceable) {
-        return replaceable;
+    auto file = AtomicFile::create(path, "image::write_png()");
+    if (!file) {
+        return file.take_error();
     }
-    std::string temp_path;
-    auto fd = create_temporary(path, temp_path);
-    if (!fd) {
-        return fd.take_error();
-    }
-    FdWriter writer{*fd};
-    const int encoded = stbi_write_png_to_func(write_all, &writer, image.width, image.height, 4,
+    const int encoded = stbi_write_png_to_func(write_to, &*file, image.width, image.height, 4,
                                                image.rgba.data(), image.width * 4);
-    std::string failure;
-    if (!encoded) {
-        failure = "PNG encoding failed";
-    } else if (writer.error != 0) {
-        failure = std::strerror(writer.error);
-    } else if (::fsync(*fd) != 0) {
-        failure = "fsync: " + errno_text();
-    }
-    if (::close(*fd) != 0 && failure.empty()) {
-        failure = "close: " + errno_text();
-    }
-    if (failure.empty() && std::rename(temp_path.c_str(), path.c_str()) != 0) {
-        failure = "rename to '" + path + "': " + errno_text();
-    }
-    if (failure.empty()) {
-        return {};
-    }
-    ::unlink(temp_path.c_str());
-    return frustum::Error{"image::write_png(): cannot write '" + path + "': " + failure};
+    return file->commit(encoded ? std::string() : std::string("PNG encoding failed"));
 }
 
 frustum::Result<Image> read_png(const std::string& path) {

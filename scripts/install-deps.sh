@@ -12,6 +12,7 @@ packages=(
   libmeshoptimizer-dev  # EXT_meshopt_compression: decoding meshopt-compressed glTF bufferViews (app/scene)
   draco gltfpack        # draco_transcoder, gltfpack: the scene/gl tests compress the generated torus with them
   libstb-dev            # stb_image_write for PNG output
+  libpng-dev            # libpng: posters streamed row by row to PNG (image/png_stream.cpp)
   doctest-dev           # unit tests
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless + GLES 3
   libosmesa6-dev        # OSMesa offscreen fallback
