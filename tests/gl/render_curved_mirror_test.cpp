@@ -39,12 +39,6 @@ render::TracedFrame trace(const render::Cameras& cameras, float sagitta_m) {
     return std::move(*traced);
 }
 
-render_test::Mask both(const render_test::Mask& a, const std::vector<bool>& b) {
-    render_test::Mask out(a.size());
-    for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] && b[i];
-    return out;
-}
-
 } // namespace
 
 TEST_SUITE("gl") {
@@ -64,7 +58,7 @@ TEST_CASE("a flat cap (sagitta 0) reproduces the planar mirror rectangle") {
         const auto o = curved_options(patches, 0.0f);
         const auto mask = curved_mask(*r, cameras, o);
         // The same quad (the cap mesh lies in the mirror's plane): the same pixels.
-        CHECK(render_test::count(both(mask, planar_mask)) >= render_test::count(planar_mask) * 99 / 100);
+        CHECK(render_test::count(render_test::both(mask, planar_mask)) >= render_test::count(planar_mask) * 99 / 100);
         const image::Image flat = r->render(render::Effect::Curved, cameras, o);
         // Every patch frustum is the rectangle method's frustum restricted to
         // the patch (same origin, the reflected eye; same near plane), so
@@ -99,7 +93,7 @@ TEST_CASE("the curved mirror's error against the ray-traced reflection falls wit
     for (int patches : {1, 4, 16}) {
         INFO("G = " << patches);
         const auto o = curved_options(patches, 0.3f);
-        const auto mask = both(curved_mask(*r, cameras, o), traced.on_mirror);
+        const auto mask = render_test::both(curved_mask(*r, cameras, o), traced.on_mirror);
         CHECK(render_test::count(mask) >= traced.mirror_pixels * 95 / 100);
         const image::Image picture = r->render(render::Effect::Curved, cameras, o);
         const auto e = render::compare_on_mask(picture, traced.picture, mask, 24);

@@ -79,7 +79,7 @@ inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& 
 }
 
 // What frustum-demo render derives for a scene it has never seen: a mirror
-// placed when the scene has none (added to `scene`), the default camera, a
+// placed for the default camera when the scene has none (added to `scene`), the default camera, a
 // renderer on `env`, and options() at the given size with the curved
 // mirror's sagitta fitted to the mirror (docs/any-scene.md).
 struct DerivedScene {
@@ -88,12 +88,12 @@ struct DerivedScene {
     render::RenderOptions options;
 };
 inline DerivedScene derive_scene(const gl_test::Environment& env, scene::Scene& scene, int width_px, int height_px) {
-    render::place_mirror(scene, render::MirrorRequest{});
-    REQUIRE(scene.mirror);
     const auto index = render::find_camera(scene, std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
     auto cameras = render::make_cameras(scene, *index, width_px, height_px);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
+    render::place_mirror(scene, render::MirrorRequest{}, &cameras->main.pair); // where this camera sees it
+    REQUIRE(scene.mirror);
     auto renderer = render::Renderer::create(*env.context, env.fn, scene);
     REQUIRE_MESSAGE(renderer.ok(), renderer.error());
     DerivedScene out{std::move(*cameras), std::move(*renderer), options(width_px, height_px)};
@@ -128,9 +128,44 @@ using Mask = std::vector<bool>;
 
 inline int count(const Mask& mask) { return static_cast<int>(std::count(mask.begin(), mask.end(), true)); }
 
-// The visible mirror pixels: the composite with tint 0 paints exactly them
-// black, and nothing else in the showcase is pure black (ambient light).
-inline Mask mirror_mask(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
+// The pixels whose centres the mirror quad covers: its four corners
+// projected by the camera pair's matrix and the quad rasterized here on the
+// CPU (rows from the top, as read back), not drawn by the code under test.
+// The corners must lie in front of the eye.
+inline Mask projected_mirror_mask(const frustum::MatrixPair<float>& camera, const scene::MirrorRect& mirror,
+                                  int width_px, int height_px) {
+    const glm::vec3 corners[4] = {mirror.corner, mirror.corner + mirror.a1, mirror.corner + mirror.a1 + mirror.a2,
+                                  mirror.corner + mirror.a2};
+    glm::dvec2 window[4]; // pixels from the bottom-left
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec4 clip = glm::dmat4(camera.matrix()) * glm::dvec4(glm::dvec3(corners[i]), 1.0);
+        REQUIRE(clip.w > 0.0);
+        window[i] = glm::dvec2((clip.x / clip.w + 1.0) / 2.0 * width_px, (clip.y / clip.w + 1.0) / 2.0 * height_px);
+    }
+    Mask mask(static_cast<std::size_t>(width_px * height_px), false);
+    for (int row = 0; row < height_px; ++row) {
+        for (int x = 0; x < width_px; ++x) {
+            const glm::dvec2 c(x + 0.5, height_px - row - 0.5);
+            int positive = 0, negative = 0;
+            for (int i = 0; i < 4; ++i) {
+                const glm::dvec2 e = window[(i + 1) % 4] - window[i], d = c - window[i];
+                const double side = e.x * d.y - e.y * d.x;
+                positive += side > 0.0;
+                negative += side < 0.0;
+            }
+            mask[static_cast<std::size_t>(row * width_px + x)] = positive == 4 || negative == 4;
+        }
+    }
+    return mask;
+}
+
+// The visible mirror pixels: the mirror quad's projection
+// (projected_mirror_mask) less what stands in front of the mirror, found as
+// the pixels that the composite with tint 0 does not paint black (nothing
+// else in the showcase is pure black: ambient light). Only occlusion comes
+// from the effect; that its black pixels lie inside the projection is
+// checked (render_mirror_test.cpp, "the mirror's pixels are its quad's projection").
+inline Mask effect_black_pixels(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
     o.mirror_tint = glm::vec3(0.0f);
     const image::Image black = r.render(render::Effect::Mirror, cameras, o);
     Mask mask(static_cast<std::size_t>(black.width * black.height));
@@ -141,6 +176,19 @@ inline Mask mirror_mask(const RenderEnvironment& r, const render::Cameras& camer
         }
     }
     return mask;
+}
+
+inline Mask both(const Mask& a, const Mask& b) {
+    Mask out(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] && b[i];
+    return out;
+}
+
+inline Mask mirror_mask(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
+    REQUIRE(r.renderer.has_value());
+    const scene::MirrorRect& mirror = *showcase().mirror;
+    return both(projected_mirror_mask(cameras.main.pair, mirror, o.width_px, o.height_px),
+                effect_black_pixels(r, cameras, o));
 }
 
 struct MaskedDiff {
