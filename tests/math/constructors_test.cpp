@@ -83,7 +83,7 @@ TEST_CASE_TEMPLATE("perspective: landmarks per depth range (near -> z_near, far 
         const Vec4<T> on_far = pair->matrix() * Vec4<T>(7, 3, -40, 1);
         CHECK(on_near.z / on_near.w == doctest::Approx(zn).epsilon(1e-5));
         CHECK(on_far.z / on_far.w == doctest::Approx(zf).epsilon(1e-5));
-        CHECK(on_near.w == doctest::Approx(0.5)); // w = -z_eye
+        CHECK(on_near.w == doctest::Approx(0.5).epsilon(mtest::tight<T>())); // w = -z_eye
         // A point halfway in eye depth is strictly between (perspective
         // depth is not linear, but it is monotonic).
         const Vec4<T> mid = pair->matrix() * Vec4<T>(0, 0, -20, 1);
@@ -135,10 +135,10 @@ TEST_CASE_TEMPLATE("off_axis: shifted window, literal matrix, equals glm::frustu
     CHECK(pair->matrix() == close(expected, tight<T>()));
     CHECK(pair->matrix() == close(glm::frustumRH_ZO<T>(0, 2, -1, 1, 1, 10), tight<T>()));
     const Vec4<T> centre = pair->matrix() * Vec4<T>(1, 0, -1, 1);
-    CHECK(centre.x == doctest::Approx(0));
+    CHECK(centre.x == doctest::Approx(0).epsilon(mtest::tight<T>()));
     const Vec4<T> corner = pair->matrix() * Vec4<T>(2, 1, -1, 1);
-    CHECK(corner.x / corner.w == doctest::Approx(1));
-    CHECK(corner.y / corner.w == doctest::Approx(1));
+    CHECK(corner.x / corner.w == doctest::Approx(1).epsilon(mtest::tight<T>()));
+    CHECK(corner.y / corner.w == doctest::Approx(1).epsilon(mtest::tight<T>()));
 
     // Paper eq. 28 (row-vector form) is the [-1, 1] OpenGL matrix: written
     // out literally and transposed it equals off_axis(MinusOneToOne).
@@ -196,10 +196,10 @@ TEST_CASE_TEMPLATE("orthographic: literal matrix per depth range, equals glm::or
         CHECK(pair->inverse() == close(inverse, tight<T>()));
         const Vec4<T> near_point = pair->matrix() * Vec4<T>(1.5, -0.5, -1, 1);
         const Vec4<T> far_point = pair->matrix() * Vec4<T>(-2, 1, -11, 1);
-        CHECK(near_point.z == doctest::Approx(frustum::clip_z_near<T>(r.depth)));
-        CHECK(far_point.z == doctest::Approx(frustum::clip_z_far<T>(r.depth)));
-        CHECK(far_point.x == doctest::Approx(-1));
-        CHECK(far_point.y == doctest::Approx(1));
+        CHECK(near_point.z == doctest::Approx(frustum::clip_z_near<T>(r.depth)).epsilon(mtest::tight<T>()));
+        CHECK(far_point.z == doctest::Approx(frustum::clip_z_far<T>(r.depth)).epsilon(mtest::tight<T>()));
+        CHECK(far_point.x == doctest::Approx(-1).epsilon(mtest::tight<T>()));
+        CHECK(far_point.y == doctest::Approx(1).epsilon(mtest::tight<T>()));
     }
     const T l = T(-3), r = T(5), b = T(-1), t = T(2), n = T(-4), f = T(7);
     CHECK(frustum::orthographic<T>(l, r, b, t, n, f, DepthRange::MinusOneToOne)->matrix() ==

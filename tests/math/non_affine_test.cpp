@@ -29,11 +29,11 @@ TEST_CASE("eq. 36 maps each plane to its face of the clip cube") {
     const glm::dvec3 on_left(-1.0, 0.0, -5.0);
     const auto c = f.to_clip(on_left, 1e-9);
     REQUIRE(c.has_value());
-    CHECK(c->x == doctest::Approx(-1.0));
+    CHECK(c->x == doctest::Approx(-1.0).epsilon(mtest::tight<double>()));
     const glm::dvec3 on_near(0.0, 0.0, -1.0);
-    CHECK(f.to_clip(on_near, 1e-9)->z == doctest::Approx(0.0));
+    CHECK(f.to_clip(on_near, 1e-9)->z == doctest::Approx(0.0).epsilon(mtest::tight<double>()));
     const glm::dvec3 on_top(0.0, 1.0, -5.0);
-    CHECK(f.to_clip(on_top, 1e-9)->y == doctest::Approx(1.0));
+    CHECK(f.to_clip(on_top, 1e-9)->y == doctest::Approx(1.0).epsilon(mtest::tight<double>()));
     // Inside points land inside the cube.
     for (double x : {-0.5, 0.0, 0.5})
         for (double z : {-2.0, -5.0, -9.0}) {
@@ -77,10 +77,10 @@ TEST_CASE("an affine frustum through eq. 36 keeps inside inside") {
                                                          glm::dvec3(0, 0, -5), DepthRange::MinusOneToOne);
     REQUIRE(f.ok());
     const auto centre = f->to_clip(glm::dvec3(0, 0, -5), 1e-9);
-    CHECK(centre->x == doctest::Approx(0.0));
-    CHECK(centre->y == doctest::Approx(0.0));
+    CHECK(centre->x == doctest::Approx(0.0).epsilon(mtest::tight<double>()));
+    CHECK(centre->y == doctest::Approx(0.0).epsilon(mtest::tight<double>()));
     // eq. 36 is linear in distances: the middle of near and far maps to z = 0 of [-1, 1].
-    CHECK(f->to_clip(glm::dvec3(0, 0, -5.5), 1e-9)->z == doctest::Approx(0.0));
+    CHECK(f->to_clip(glm::dvec3(0, 0, -5.5), 1e-9)->z == doctest::Approx(0.0).epsilon(mtest::tight<double>()));
 }
 
 TEST_CASE("from_planes rejects an inside point outside a plane, and bad planes") {

@@ -53,11 +53,11 @@ TEST_CASE("tolerance helpers compare what they say") {
     CHECK(inverse_residual(a, off) > 1e-10);
     // factor_between: the factor and its sign.
     const Factor f = factor_between(a, glm::dmat4(-3.0 * a));
-    CHECK(f.lambda == doctest::Approx(-3));
+    CHECK(f.lambda == doctest::Approx(-3).epsilon(mtest::tight<double>()));
     CHECK(f.residual <= 1e-15);
     // incidence: 0 on the plane, +-1 along the normal at infinity.
     CHECK(incidence(Plane<double>(0, 0, 1, -2), glm::dvec4(5, 7, 2, 1)) == 0);
-    CHECK(incidence(Plane<double>(0, 0, 1, 0), glm::dvec4(0, 0, 3, 0)) == doctest::Approx(1));
+    CHECK(incidence(Plane<double>(0, 0, 1, 0), glm::dvec4(0, 0, 3, 0)) == doctest::Approx(1).epsilon(mtest::tight<double>()));
 }
 
 } // TEST_SUITE
