@@ -2,6 +2,8 @@
 
 #include <scene/load_gltf.hpp>
 
+#include <cstdio>
+#include <string>
 #include <utility>
 
 namespace demo {
@@ -46,6 +48,13 @@ std::optional<Failure> Session::open(const Settings& settings, const Reporter& r
     }
     scene = std::move(std::get<LoadedScene>(loaded).scene);
     camera_index = std::get<LoadedScene>(loaded).camera_index;
+    if (settings.verbose && scene.origin_m != glm::dvec3(0.0)) {
+        char origin[96]; // whole metres (scene.hpp)
+        std::snprintf(origin, sizeof origin, "(%.0f, %.0f, %.0f)", scene.origin_m.x, scene.origin_m.y,
+                      scene.origin_m.z);
+        reporter.note(std::string("scene origin: ") + origin +
+                      " m in the file's coordinates; the positions below are relative to it");
+    }
     if (how.cameras_at_size) {
         // Stereo: the cameras are made for one eye's half of the image.
         const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;

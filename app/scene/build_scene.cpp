@@ -6,6 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -22,6 +23,10 @@ using frustum::Result;
 using frustum::Status;
 
 constexpr double kDegenerateLength = 1e-12;
+// Scenes whose centre lies further than this from the file's origin are
+// kept relative to their centre (Scene::origin_m): float steps there are
+// 2^-14 m = 61 um at 1024 m, 0.5 m at 6.4e6 m (ECEF), 0.06 m at 5e5 m (UTM).
+constexpr double kRebaseBeyondM = 1024.0;
 
 Result<std::vector<glm::vec4>> read_colors(const tinygltf::Model& model, int accessor) {
     Result<std::vector<float>> values = read_floats(model, accessor);
@@ -444,19 +449,64 @@ private:
     std::map<std::pair<int, std::vector<double>>, int> variants_;
 };
 
-// Instances, cameras, mirror and lens from the flattened node forest.
+// Scene::origin_m for the flattened forest: the centre of the meshes'
+// world bounds (each mesh's object-space box, its eight corners through the
+// node's double world transform), rounded to whole metres, or 0 when that
+// centre is within kRebaseBeyondM of the file's origin (or nothing is drawn,
+// or the centre is not finite: place_nodes() refuses those transforms).
+glm::dvec3 scene_origin(const tinygltf::Model& model, const std::vector<WorldNode>& nodes, const Scene& scene) {
+    glm::dvec3 low(std::numeric_limits<double>::max());
+    glm::dvec3 high(std::numeric_limits<double>::lowest());
+    for (const WorldNode& flat : nodes) {
+        const int mesh = model.nodes[flat.node].mesh;
+        if (mesh < 0) {
+            continue;
+        }
+        for (const Primitive& primitive : scene.meshes[static_cast<std::size_t>(mesh)].primitives) {
+            if (primitive.positions.empty()) {
+                continue;
+            }
+            glm::vec3 box_low = primitive.positions.front();
+            glm::vec3 box_high = box_low;
+            for (const glm::vec3& p : primitive.positions) {
+                box_low = glm::min(box_low, p);
+                box_high = glm::max(box_high, p);
+            }
+            for (const glm::vec3& corner : corners(Bounds{box_low, box_high})) {
+                const glm::dvec3 world(flat.world * glm::dvec4(glm::dvec3(corner), 1.0));
+                low = glm::min(low, world);
+                high = glm::max(high, world);
+            }
+        }
+    }
+    if (!(low.x <= high.x)) {
+        return glm::dvec3(0.0);
+    }
+    const glm::dvec3 centre = 0.5 * low + 0.5 * high;
+    const double reach_m = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    if (!std::isfinite(reach_m) || reach_m <= kRebaseBeyondM) {
+        return glm::dvec3(0.0);
+    }
+    return glm::round(centre);
+}
+
+// Instances, cameras, mirror and lens from the flattened node forest, with
+// every world transform moved by -scene.origin_m in double before it is
+// rounded to float.
 Status place_nodes(const tinygltf::Model& model, const std::vector<WorldNode>& nodes, MeshVariants& meshes,
                    Scene& scene) {
-    for (const WorldNode& flat : nodes) {
-        const tinygltf::Node& node = model.nodes[flat.node];
+    for (const WorldNode& unmoved : nodes) {
+        const tinygltf::Node& node = model.nodes[unmoved.node];
         // Finite inputs can still overflow single precision when composed
         // down the hierarchy (or exceed it alone: a translation of 1e39).
-        const std::string too_large = "node " + std::to_string(flat.node) +
+        const std::string too_large = "node " + std::to_string(unmoved.node) +
                                       (node.name.empty() ? "" : " (\"" + node.name + "\")") +
                                       " has a world transform too large for single precision";
-        if (!finite_single(flat.world)) {
+        if (!finite_single(unmoved.world)) {
             return Error{too_large};
         }
+        WorldNode flat = unmoved;
+        flat.world[3] -= glm::dvec4(scene.origin_m, 0.0);
         int instance = -1; // the first Instance of the node (EXT_mesh_gpu_instancing: of several)
         if (node.mesh >= 0) {
             Result<int> mesh = meshes.index(node.mesh, node.weights, scene);
@@ -529,7 +579,9 @@ Result<Scene> build_scene(tinygltf::Model&& model, const LoadOptions& options) {
         scene.meshes.push_back(std::move(mesh).value());
     }
     MeshVariants variants(model, uses);
-    if (Status placed = place_nodes(model, flatten(model, *roots), variants, scene); !placed) {
+    const std::vector<WorldNode> nodes = flatten(model, *roots);
+    scene.origin_m = scene_origin(model, nodes, scene);
+    if (Status placed = place_nodes(model, nodes, variants, scene); !placed) {
         return placed.take_error();
     }
     scene.world_bounds = bounds_of(scene);

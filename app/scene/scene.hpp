@@ -134,6 +134,15 @@ struct Scene {
     std::optional<MirrorRect> mirror;
     std::optional<LensSpot> lens;
     Bounds world_bounds; // of all instances' positions
+    // Where the file's world origin is not, the scene's is: every world
+    // position above (instances, cameras, mirror, lens, bounds) is relative
+    // to this point of the file's world, in metres. Chosen at load (relative
+    // to centre, as Cesium's CESIUM_RTC does): the centre of the meshes'
+    // bounds rounded to whole metres when it is more than 1024 m from the
+    // file's origin (UTM, ECEF and other georeferenced exports), else 0.
+    // Transforms are composed in double and moved by -origin_m before they
+    // are rounded to float, so the GPU never sees a large coordinate.
+    glm::dvec3 origin_m{0.0};
 };
 
 } // namespace scene

@@ -3,12 +3,23 @@
 // whole scene (instances, cameras, mirror, lens spot, bounds) is moved by
 // (5000, 120, -2000) m, as a glTF parent node with that translation would,
 // and each effect's picture is compared with the one at the origin.
+//
+// Georeferenced files (UTM, ECEF) go further: the showcase and a generated
+// model under a parent node at (500000, 0, 5000000) m and (6378137, 0, 0) m,
+// written as glTF files, load relative to their centre (scene::Scene::origin_m)
+// and render every effect as at the origin.
 #include "render_test_support.hpp"
 
+#include <scene/load_gltf.hpp>
+#include <support/temp_dir.hpp>
+
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 namespace {
 
@@ -104,6 +115,86 @@ TEST_CASE("every effect 5 km from the origin looks as it does at the origin") {
                 render_test::save_failure("far-from-origin-" + file.stem().string() + "-" +
                                               std::string(render::to_string(effect)),
                                           at_origin.at(effect), far_out.at(effect));
+            }
+        }
+    }
+}
+
+namespace {
+
+// `file` (a .gltf with embedded buffers and images) with its scene's root
+// nodes under one new root node translated by `offset_m`, written to `out`.
+void write_georeferenced(const std::filesystem::path& file, const glm::dvec3& offset_m,
+                         const std::filesystem::path& out) {
+    std::ifstream in(file);
+    REQUIRE(in);
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    const int scene = gltf.value("scene", 0);
+    nlohmann::json& roots = gltf["scenes"][scene]["nodes"];
+    gltf["nodes"].push_back({{"name", "georeference"},
+                             {"translation", {offset_m.x, offset_m.y, offset_m.z}},
+                             {"children", roots}});
+    roots = nlohmann::json::array({gltf["nodes"].size() - 1});
+    support::write_file(out, gltf.dump());
+}
+
+// Pixels over kToleranceLsb at (500000, 0, 5000000) m and (6378137, 0, 0) m,
+// the larger of the two, measured (llvmpipe, 160x90): the scene keeps the
+// same coordinates relative to its rounded centre, so only float rounding of
+// the sub-metre remainder differs.
+const Measured kShowcaseGeoMeasuredPx = {
+    {render::Effect::Plain, 0},   {render::Effect::Mirror, 0},    {render::Effect::Tiles, 0},
+    {render::Effect::Frustum, 0}, {render::Effect::Curved, 0},    {render::Effect::Lens, 1},
+    {render::Effect::NonAffine, 0}, {render::Effect::Portal, 0}, {render::Effect::Recursion, 1}};
+const Measured kBoxGeoMeasuredPx = {
+    {render::Effect::Plain, 0},   {render::Effect::Mirror, 0},    {render::Effect::Tiles, 0},
+    {render::Effect::Frustum, 0}, {render::Effect::Curved, 0},    {render::Effect::Lens, 0},
+    {render::Effect::NonAffine, 0}, {render::Effect::Portal, 0}, {render::Effect::Recursion, 0}};
+
+} // namespace
+
+TEST_CASE("every effect at UTM and ECEF coordinates looks as it does at the origin") {
+    auto env = gl_test::make_any_environment();
+    if (!env) {
+        return;
+    }
+    const std::filesystem::path source(FRUSTUM_SOURCE_DIR);
+    const struct {
+        std::filesystem::path file;
+        const Measured& measured_px;
+    } cases[] = {{source / "assets/showcase.gltf", kShowcaseGeoMeasuredPx},
+                 {source / "tests/data/gltf-models/box_textured.gltf", kBoxGeoMeasuredPx}};
+    const glm::dvec3 offsets_m[] = {{500000.0, 0.0, 5000000.0}, {6378137.0, 0.0, 0.0}};
+    support::TempDir dir;
+    for (const auto& c : cases) {
+        INFO(c.file.filename().string());
+        const auto scene = scene::load_gltf(c.file.string());
+        REQUIRE_MESSAGE(scene.ok(), scene.error());
+        CHECK(scene->origin_m == glm::dvec3(0.0)); // near the origin: kept as it is
+        const auto at_origin = render_all(*env, *scene);
+        for (const glm::dvec3& offset_m : offsets_m) {
+            std::ostringstream where;
+            where << "offset (" << offset_m.x << ", " << offset_m.y << ", " << offset_m.z << ") m";
+            INFO(where.str());
+            const std::filesystem::path moved_file = dir / ("georeferenced-" + c.file.filename().string());
+            write_georeferenced(c.file, offset_m, moved_file);
+            const auto moved = scene::load_gltf(moved_file.string());
+            REQUIRE_MESSAGE(moved.ok(), moved.error());
+            // Relative to its centre rounded to whole metres: the offset plus
+            // the origin picture's centre, rounded.
+            const glm::dvec3 centre_m = 0.5 * (glm::dvec3(scene->world_bounds.min) + glm::dvec3(scene->world_bounds.max));
+            CHECK(moved->origin_m == glm::round(offset_m + centre_m));
+            CHECK(glm::length(glm::dvec3(moved->world_bounds.max)) < 1000.0); // the GPU sees small numbers
+            const auto far_out = render_all(*env, *moved);
+            for (render::Effect effect : render::kAllEffects) {
+                INFO(render::to_string(effect));
+                const int max_different = max_different_px(c.measured_px, effect);
+                const auto diff = image::compare(far_out.at(effect), at_origin.at(effect), kToleranceLsb);
+                REQUIRE(diff.ok());
+                MESSAGE(c.file.filename().string() << " " << where.str() << " " << render::to_string(effect) << ": "
+                                                   << diff->pixels_over << " of " << kWidthPx * kHeightPx
+                                                   << " pixels differ");
+                CHECK(diff->pixels_over <= max_different);
             }
         }
     }
