@@ -13,6 +13,7 @@ layout(location = 3) in vec2 a_texcoord;
 uniform vec4 u_planes[6]; // unit, OUTWARD: left, right, bottom, top, near, far
 uniform float u_z_near;   // clip z of the near (s = 0) and far (s = 1) planes
 uniform float u_z_far;
+uniform vec4 u_crop;      // ndc.xy * u_crop.xy + u_crop.zw: a poster tile's crop (paper eq. 14), (1, 1, 0, 0) for the frame
 
 out vec3 v_world;
 out vec3 v_normal;
@@ -32,5 +33,6 @@ void main() {
     // the eye depth).
     vec3 d = frustum_non_affine_denominators(u_planes, a_position);
     float w = -0.5 * (d.x + d.y);
-    gl_Position = vec4(frustum_non_affine_clip(u_planes, a_position, u_z_near, u_z_far).xyz * w, w);
+    vec3 ndc = frustum_non_affine_clip(u_planes, a_position, u_z_near, u_z_far).xyz;
+    gl_Position = vec4(vec3(ndc.xy * u_crop.xy + u_crop.zw, ndc.z) * w, w);
 }

@@ -112,12 +112,13 @@ frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const 
     return atlas;
 }
 
-void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const CurvedPlan& plan, const CapMesh& mesh,
-              const gl::OffscreenTarget& atlas, const glm::ivec2& tile) {
+// on_frame: the camera cropped to the target's window.
+void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::MatrixPair<float>& on_frame,
+              const CurvedPlan& plan, const CapMesh& mesh, const gl::OffscreenTarget& atlas, const glm::ivec2& tile) {
     const gl::Functions& fn = ctx.fn;
     const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
     p.use();
-    p.set_view_projection(ctx.depth.to_gpu(draw.camera).matrix());
+    p.set_view_projection(ctx.depth.to_gpu(on_frame).matrix());
     p.set_tint(draw.tint);
     const glm::vec2 atlas_size(static_cast<float>(atlas.width()), static_cast<float>(atlas.height()));
     p.set_half_texel(glm::vec2(0.5f / atlas_size.x, 0.5f / atlas_size.y));
@@ -181,10 +182,17 @@ glm::ivec2 curved_tile_size(const CurvedMirror& mirror, const frustum::MatrixPai
 
 frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
                                          const CurvedDraw& draw) {
+    // Planned for the whole frame (the atlas's tile size too); the target
+    // draws its window's crop.
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
+    auto on_frame = crop_to_window(draw.camera, window);
+    if (!on_frame) {
+        return on_frame.take_error_in("render::draw_curved_mirror_frame()");
+    }
     const auto plain = [&]() -> frustum::Status {
         frame.bind();
         begin_frame(ctx);
-        draw_scene(ctx, SceneDraw{draw.camera});
+        draw_scene(ctx, SceneDraw{*on_frame});
         return {};
     };
     auto mirror = CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
@@ -202,7 +210,8 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     if (!plan->has_value()) {
         return plain();
     }
-    const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, frame.width(), frame.height());
+    const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
+                                              window.full_height_px);
     auto atlas = render_atlas(ctx, **plan, tile, draw.mirror.instance);
     if (!atlas) {
         return atlas.take_error();
@@ -213,10 +222,10 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     }
     frame.bind();
     begin_frame(ctx);
-    SceneDraw main(draw.camera);
+    SceneDraw main(*on_frame);
     main.skip_instance = draw.mirror.instance;
     draw_scene(ctx, main);
-    draw_cap(ctx, draw, **plan, *mesh, *atlas, tile);
+    draw_cap(ctx, draw, *on_frame, **plan, *mesh, *atlas, tile);
     return gl::check_error(ctx.fn, "render::draw_curved_mirror_frame()");
 }
 

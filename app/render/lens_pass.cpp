@@ -56,7 +56,9 @@ frustum::Result<frustum::Lens<float>> lens_on_near_plane(const frustum::MatrixPa
 }
 
 frustum::Status draw_lens_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const LensDraw& draw) {
-    auto tiles = frustum::lens_tiles(draw.camera, draw.lens, frame.width(), frame.height(), draw.grid, draw.grid);
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
+    auto tiles = frustum::lens_tiles(draw.camera, draw.lens, window.full_width_px, window.full_height_px, draw.grid,
+                                     draw.grid);
     if (!tiles) {
         return tiles.take_error_in("render::draw_lens_frame()");
     }

@@ -30,14 +30,30 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
     return target;
 }
 
+// The part of the reflection texture a window needs: Oblique and
+// ReflectOnly textures cover the mirror's screen rectangle pixel for pixel,
+// so the window's share is the rectangle intersected with the window
+// (empty optional: all of it, the Rectangle method's texture spans the
+// mirror, not the screen, or the window is the whole frame).
+std::optional<PixelRect> texture_part(const ReflectionView& view, MirrorMethod method, const FrameWindow& window) {
+    if (method == MirrorMethod::Rectangle) {
+        return std::nullopt;
+    }
+    const auto part = intersect(view.screen_rect, window.rect);
+    if (!part || (part->width == view.screen_rect.width && part->height == view.screen_rect.height)) {
+        return std::nullopt;
+    }
+    return part;
+}
+
 // The reflection's fog: its depth decoded with the pair that wrote it, or
 // (the counter-example) with the reflected pair before the oblique near
 // plane, cropped alike.
 frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget& target, const ReflectionView& view,
-                               const gl::OffscreenTarget& frame, const MirrorDraw& draw, const FogDraw& fog) {
+                               const FrameWindow& window, const MirrorDraw& draw, const FogDraw& fog) {
     frustum::MatrixPair<float> decode = view.pair;
     if (fog.decode_reflection_unclipped) {
-        auto unclipped = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(),
+        auto unclipped = plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px,
                                          MirrorMethod::ReflectOnly, draw.bounds);
         if (!unclipped) {
             return frustum::Error{unclipped.error()};
@@ -46,6 +62,13 @@ frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget
             return frustum::Error{"render::draw_mirror_frame(): no unclipped reflection to decode the fog with"};
         }
         decode = (*unclipped)->pair;
+        if (const auto part = texture_part(**unclipped, draw.method, window)) {
+            auto cropped = crop_part(decode, (*unclipped)->screen_rect, *part);
+            if (!cropped) {
+                return cropped.take_error_in("render::draw_mirror_frame()");
+            }
+            decode = *cropped;
+        }
     }
     return fog.pass->apply(ctx, target, decode, fog.params);
 }
@@ -77,24 +100,44 @@ void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<f
 }
 
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
-    auto plan = plan_reflection(draw.mirror, draw.camera, frame.width(), frame.height(), draw.method, draw.bounds);
+    // Planned for the whole frame; the target draws its window's crop.
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
+    auto plan = plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px, draw.method,
+                                draw.bounds);
     if (!plan) {
         return plan.take_error();
     }
+    auto on_frame = crop_to_window(draw.camera, window);
+    if (!on_frame) {
+        return on_frame.take_error_in("render::draw_mirror_frame()");
+    }
     const int surface = draw.mirror.instance;
-    if (!plan->has_value() || surface < 0) {
+    // The screen-aligned texture covers the rectangle: a window that misses
+    // it shows no mirror pixel (the rectangle bounds the surface's).
+    const bool misses = plan->has_value() && draw.method != MirrorMethod::Rectangle &&
+                        !intersect((*plan)->screen_rect, window.rect);
+    if (!plan->has_value() || surface < 0 || misses) {
         frame.bind();
         begin_frame(ctx);
-        draw_scene(ctx, SceneDraw{draw.camera});
-        return draw.fog ? draw.fog->pass->apply(ctx, frame, draw.camera, draw.fog->params) : frustum::Status{};
+        SceneDraw plain{*on_frame};
+        plain.skip_instance = misses ? surface : -1;
+        draw_scene(ctx, plain);
+        return draw.fog ? draw.fog->pass->apply(ctx, frame, *on_frame, draw.fog->params) : frustum::Status{};
     }
-    const ReflectionView& view = **plan;
+    ReflectionView view = **plan;
+    if (const auto part = texture_part(view, draw.method, window)) {
+        auto cropped = crop_part(view.pair, view.screen_rect, *part);
+        if (!cropped) {
+            return cropped.take_error_in("render::draw_mirror_frame()");
+        }
+        view = ReflectionView{*cropped, part->width, part->height, *part};
+    }
     auto reflection = render_reflection(ctx, view, surface);
     if (!reflection) {
         return reflection.take_error();
     }
     if (draw.fog) {
-        if (auto status = fog_reflection(ctx, *reflection, view, frame, draw, *draw.fog); !status) {
+        if (auto status = fog_reflection(ctx, *reflection, view, window, draw, *draw.fog); !status) {
             return status;
         }
     }
@@ -104,15 +147,15 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
     }
     frame.bind();
     begin_frame(ctx);
-    SceneDraw main{draw.camera};
+    SceneDraw main{*on_frame};
     main.skip_instance = surface;
     draw_scene(ctx, main);
     if (draw.fog) { // before the surface: its colour, the reflection, is fogged already
-        if (auto status = draw.fog->pass->apply(ctx, frame, draw.camera, draw.fog->params); !status) {
+        if (auto status = draw.fog->pass->apply(ctx, frame, *on_frame, draw.fog->params); !status) {
             return status;
         }
     }
-    draw_reflection_surface(ctx, draw.camera, surface, reflection->color_texture(), view.pair.matrix(), draw.tint);
+    draw_reflection_surface(ctx, *on_frame, surface, reflection->color_texture(), view.pair.matrix(), draw.tint);
     return gl::check_error(ctx.fn, "render::draw_mirror_frame()");
 }
 

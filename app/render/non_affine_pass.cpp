@@ -40,13 +40,14 @@ void set_material(const PassContext& ctx, const NonAffineProgram& p, const World
 }
 
 void set_frame_uniforms(const PassContext& ctx, const NonAffineProgram& p,
-                        const frustum::NonAffineFrustum<float>& frustum) {
+                        const frustum::NonAffineFrustum<float>& frustum, const FrameWindow& window) {
     const gl::Functions& fn = ctx.fn;
     glm::vec4 planes[6];
     for (int i = 0; i < 6; ++i) {
         planes[i] = frustum.plane(i).abcd;
     }
     p.set_planes(planes);
+    p.set_crop(window_ndc_scale_offset(window));
     p.set_clip_z(frustum::clip_z_near<float>(ctx.depth.gpu_range()), frustum::clip_z_far<float>(ctx.depth.gpu_range()));
     p.set_flat_normal_sign(1.0f);
     p.set_light(ctx.lighting.to_light, ctx.lighting.ambient, ctx.lighting.diffuse);
@@ -147,7 +148,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
         const NonAffineProgram& p = ctx.programs.non_affine_program(range.group == AlphaGroup::Mask);
         if (&p != current) {
             p.use();
-            set_frame_uniforms(ctx, p, frustum);
+            set_frame_uniforms(ctx, p, frustum, window_of(ctx, frame.width(), frame.height()));
             current = &p;
         }
         if (range.group == AlphaGroup::Blend && !blending) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "render/depth_policy.hpp"
+#include "render/frame_window.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/programs.hpp"
 
@@ -12,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <optional>
 
 namespace render {
 
@@ -38,6 +40,15 @@ struct PassContext {
     int samples = 1;
     // RenderOptions::pass_end: called as a pass ends, when set.
     std::function<void(const char* pass)> pass_end = {};
+    // The part of the frame the bound frame target holds (a poster tile):
+    // the passes plan for window->full_* and draw the crop to window->rect.
+    // Unset: the target is the whole frame.
+    std::optional<FrameWindow> window = {};
 };
+
+// ctx.window, else the whole frame of a target_width_px x target_height_px target.
+inline FrameWindow window_of(const PassContext& ctx, int target_width_px, int target_height_px) {
+    return ctx.window ? *ctx.window : whole_frame(target_width_px, target_height_px);
+}
 
 } // namespace render

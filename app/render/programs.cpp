@@ -99,12 +99,13 @@ frustum::Result<NonAffineProgram> NonAffineProgram::build(const gl::Functions& f
         const Source source{alpha_mask ? "masked non-affine" : "non-affine",
                             detail::insert_after_version(shaders::non_affine_vert, shaders::frustum_glsl),
                             with_defines(shaders::scene_frag, false, alpha_mask)};
-        return p.link_lit(fn, source, {{"u_planes", &p.planes_}, {"u_z_near", &p.z_near_}, {"u_z_far", &p.z_far_}},
+        return p.link_lit(fn, source, {{"u_planes", &p.planes_}, {"u_z_near", &p.z_near_}, {"u_z_far", &p.z_far_}, {"u_crop", &p.crop_}},
                           alpha_mask);
     });
 }
 
 void NonAffineProgram::set_planes(const glm::vec4 (&abcd)[6]) const { set(planes_, abcd, 6); }
+void NonAffineProgram::set_crop(const glm::vec4& scale_offset) const { set(crop_, scale_offset); }
 void NonAffineProgram::set_clip_z(float z_near, float z_far) const {
     set(z_near_, z_near);
     set(z_far_, z_far);

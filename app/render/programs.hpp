@@ -85,9 +85,12 @@ public:
     void set_planes(const glm::vec4 (&abcd)[6]) const;
     // Clip z of the near and far planes in the GPU's depth range.
     void set_clip_z(float z_near, float z_far) const;
+    // NDC xy -> xy * scale_offset.xy + scale_offset.zw: the crop to a poster
+    // tile (window_ndc_scale_offset()); (1, 1, 0, 0) for the whole frame.
+    void set_crop(const glm::vec4& scale_offset) const;
 
 private:
-    GLint planes_ = -1, z_near_ = -1, z_far_ = -1;
+    GLint planes_ = -1, z_near_ = -1, z_far_ = -1, crop_ = -1;
 };
 
 // shaders/mirror_composite.*: the mirror surface with a projective lookup.

@@ -11,10 +11,46 @@
 namespace render {
 namespace {
 
-// A view's own target: its rectangle's size, sampled like the frame.
-gl::OffscreenTargetOptions view_target(const PassContext& ctx, const ViewNode& node) {
-    return {static_cast<int>(node.rect.width), static_cast<int>(node.rect.height), gl::ColorStorage::Texture,
-            gl::DepthFormat::Depth24, ctx.samples};
+// What a view draws into the target's window (frame_window.hpp): its
+// rectangle (whole frame pixels, the planner's) intersected with the
+// window, its pair and its surface matrix cropped to that part (§5.1). Every
+// view is planned for the whole frame; a view whose rectangle misses the
+// window is not drawn (its surface shows no pixel there either: the
+// rectangle bounds it).
+struct ViewPart {
+    std::optional<PixelRect> part;
+    std::optional<frustum::MatrixPair<float>> render;
+    glm::mat4 surface_matrix{1.0f};
+};
+
+PixelRect whole_pixels(const frustum::CropRect<float>& r) {
+    return {static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.width), static_cast<int>(r.height)};
+}
+
+frustum::Result<std::vector<ViewPart>> view_parts(const std::vector<ViewNode>& nodes, const FrameWindow& window) {
+    std::vector<ViewPart> parts(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const ViewNode& node = nodes[i];
+        const PixelRect rect = whole_pixels(node.rect);
+        parts[i].part = intersect(rect, window.rect);
+        if (!parts[i].part) {
+            continue;
+        }
+        auto render = crop_part(node.render, rect, *parts[i].part);
+        if (!render) {
+            return render.take_error_in("render::draw_recursion_frame()");
+        }
+        parts[i].render = *render;
+        const bool whole = parts[i].part->width == rect.width && parts[i].part->height == rect.height;
+        parts[i].surface_matrix = whole ? node.surface_matrix
+                                        : crop_part_matrix(node.surface_matrix, rect, *parts[i].part);
+    }
+    return parts;
+}
+
+// A view's own target: its part's size, sampled like the frame.
+gl::OffscreenTargetOptions view_target(const PassContext& ctx, const ViewPart& view) {
+    return {view.part->width, view.part->height, gl::ColorStorage::Texture, gl::DepthFormat::Depth24, ctx.samples};
 }
 
 struct Frame {
@@ -22,6 +58,7 @@ struct Frame {
     const PassContext link_ctx; // the same, drawing the links' quads
     const RecursionDraw& draw;
     RecursionStats* stats;
+    std::vector<ViewPart> parts;                              // per node
     std::vector<std::optional<gl::OffscreenTarget>> textures; // per node, alive until its parent is drawn
 };
 
@@ -29,14 +66,15 @@ struct Frame {
 // not look through, and its children's surfaces with their textures.
 void draw_view(Frame& f, int index) {
     const ViewNode& node = f.draw.nodes[static_cast<std::size_t>(index)];
+    const frustum::MatrixPair<float>& render = *f.parts[static_cast<std::size_t>(index)].render;
     DrawCounts* counts = f.stats ? &f.stats->per_level[static_cast<std::size_t>(node.level)] : nullptr;
-    SceneDraw scene{node.render};
+    SceneDraw scene{render};
     scene.cull = node.cull;
     scene.clip_plane = node.clip_plane;
     scene.counts = counts;
     draw_scene(f.ctx, scene);
 
-    SceneDraw quads{node.render};
+    SceneDraw quads{render};
     quads.clip_plane = node.clip_plane;
     if (node.link >= 0) { // the surface this view's near plane lies on
         const ViewLink& through = f.draw.links[static_cast<std::size_t>(node.link)];
@@ -51,13 +89,17 @@ void draw_view(Frame& f, int index) {
     draw_scene(f.link_ctx, quads);
     for (int c : children) {
         const ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
+        const ViewPart& child_part = f.parts[static_cast<std::size_t>(c)];
+        if (!child_part.part) {
+            continue; // outside the window
+        }
         const ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
         const glm::vec3 tint = link.kind == ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
         std::optional<gl::OffscreenTarget>& texture = f.textures[static_cast<std::size_t>(c)];
-        draw_reflection_surface(f.link_ctx, node.render, link.surface_instance, texture->color_texture(),
-                                child.surface_matrix, tint);
+        draw_reflection_surface(f.link_ctx, render, link.surface_instance, texture->color_texture(),
+                                child_part.surface_matrix, tint);
         if (f.draw.targets) {
-            f.draw.targets->give_back(std::move(*texture), view_target(f.ctx, child));
+            f.draw.targets->give_back(std::move(*texture), view_target(f.ctx, child_part));
         }
         texture.reset();
     }
@@ -70,10 +112,14 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     if (draw.nodes.empty()) {
         return frustum::Error{"render::draw_recursion_frame(): no views (plan_view_tree() gives at least the camera)"};
     }
+    auto parts = view_parts(draw.nodes, window_of(ctx, frame.width(), frame.height()));
+    if (!parts) {
+        return frustum::Error{parts.error()};
+    }
     Frame f{ctx,
             PassContext{ctx.fn, ctx.api, ctx.programs, draw.link_scene, ctx.depth, ctx.lighting, ctx.clear_color,
                         ctx.samples},
-            draw, stats, std::vector<std::optional<gl::OffscreenTarget>>(draw.nodes.size())};
+            draw, stats, std::move(*parts), std::vector<std::optional<gl::OffscreenTarget>>(draw.nodes.size())};
     if (stats) {
         int levels = 0;
         for (const ViewNode& node : draw.nodes) {
@@ -98,7 +144,10 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     // Children come after their parents: the deepest views are drawn first.
     for (std::size_t i = draw.nodes.size(); i-- > 1;) {
         const ViewNode& node = draw.nodes[i];
-        const gl::OffscreenTargetOptions options = view_target(ctx, node);
+        if (!f.parts[i].part) {
+            continue; // outside the window: nothing of it is seen there
+        }
+        const gl::OffscreenTargetOptions options = view_target(ctx, f.parts[i]);
         auto target = draw.targets ? draw.targets->take(ctx.fn, options) : gl::OffscreenTarget::create(ctx.fn, options);
         if (!target) {
             return frustum::Error{"render::draw_recursion_frame(): level " + std::to_string(node.level) +

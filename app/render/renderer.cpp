@@ -36,8 +36,9 @@ Renderer::Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene
                    FogPass fog_pass, const scene::Scene& scene, std::vector<LinkGroup> link_groups)
     : context_(&context), fn_(&fn), gpu_scene_(std::move(gpu_scene)), programs_(std::move(programs)),
       fog_pass_(std::move(fog_pass)),
-      mirror_(scene.mirror), bounds_(scene.world_bounds), scene_mirror_(scene.mirror), lens_(scene.lens),
-      link_groups_(std::move(link_groups)), object_geometry_(WorldGeometry::in_object_space(scene)) {
+      mirror_(scene.mirror), bounds_(scene.world_bounds), boxes_(instance_boxes(scene)), scene_mirror_(scene.mirror),
+      lens_(scene.lens),
+      link_groups_(std::move(link_groups)), nonaffine_geometry_(WorldGeometry::in_object_space(scene)) {
     for (const scene::Instance& instance : scene.instances) {
         scene_worlds_.push_back(instance.world);
     }
@@ -80,7 +81,7 @@ frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, 
     const LinkSet set = options.recursion_links;
     const bool portal = effect == Effect::Portal;
     LinkGroup& group = link_groups_[portal ? 0 : set == LinkSet::Mirrors ? 1 : 2];
-    auto placed = portal ? place_portal_pair(camera, bounds_) : place_facing_links(camera, bounds_, set);
+    auto placed = portal ? place_portal_pair(camera, bounds_, boxes_) : place_facing_links(camera, bounds_, set, boxes_);
     if (!placed) {
         return frustum::Error{placed.error()};
     }
@@ -131,6 +132,21 @@ frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cam
 
 frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
                                       const gl::OffscreenTarget& frame) const {
+    return render_into(effect, cameras, options, frame, whole_frame(frame.width(), frame.height()));
+}
+
+frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+                                      const gl::OffscreenTarget& frame, const FrameWindow& window) const {
+    if (window.rect.width != frame.width() || window.rect.height != frame.height() || window.rect.x < 0 ||
+        window.rect.y < 0 || window.rect.x + window.rect.width > window.full_width_px ||
+        window.rect.y + window.rect.height > window.full_height_px) {
+        return frustum::Error{"render::Renderer::render_into(): window " + std::to_string(window.rect.width) + "x" +
+                              std::to_string(window.rect.height) + "+" + std::to_string(window.rect.x) + "+" +
+                              std::to_string(window.rect.y) + " must lie inside the " +
+                              std::to_string(window.full_width_px) + "x" + std::to_string(window.full_height_px) +
+                              " frame and match the " + std::to_string(frame.width()) + "x" +
+                              std::to_string(frame.height()) + " target"};
+    }
     auto depth = DepthPolicy::apply(*fn_, *context_, options.depth);
     if (!depth) {
         return depth.take_error();
@@ -139,6 +155,7 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
     PassContext ctx = pass_context(*depth, options.lighting);
     ctx.samples = frame.samples();
     ctx.pass_end = options.pass_end;
+    ctx.window = window;
     if (auto status = draw(effect, ctx, frame, cameras, options); !status) {
         return status;
     }
@@ -187,6 +204,14 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         fog = FogDraw{&fog_pass_, fit_fog(*options.fog, bounds_, ctx.clear_color),
                       options.fog->decode_reflection_unclipped};
     }
+    // Every effect is planned for the whole frame; what reaches the target
+    // is the crop of that plan to the window (frame_window.hpp).
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
+    const int full_width_px = window.full_width_px, full_height_px = window.full_height_px;
+    auto on_frame = crop_to_window(cameras.main.pair, window);
+    if (!on_frame) {
+        return on_frame.take_error_in("render::Renderer::render_into()");
+    }
     switch (effect) {
     case Effect::Lens: {
         auto lens = fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
@@ -207,7 +232,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         if (!slits) {
             return slits.take_error();
         }
-        const WorldGeometry world = object_geometry_.placed(gpu_scene_.instances());
+        const SplitGeometry& world = nonaffine_geometry_.get(gpu_scene_.instances(), fitted->max_edge_m);
         if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
             return stats.take_error();
         }
@@ -219,7 +244,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
                 ctx, frame, CurvedDraw{cameras.main.pair, *mirror_, options.curved, options.mirror_tint, bounds_});
         }
         begin_frame(ctx); // no mirror: the plain frame
-        draw_scene(ctx, SceneDraw{cameras.main.pair});
+        draw_scene(ctx, SceneDraw{*on_frame});
         return {};
     case Effect::Mirror:
         if (mirror_) {
@@ -230,8 +255,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         [[fallthrough]]; // no mirror: the plain frame
     case Effect::Plain:
         begin_frame(ctx);
-        draw_scene(ctx, SceneDraw{cameras.main.pair});
-        return fog ? fog_pass_.apply(ctx, frame, cameras.main.pair, fog->params) : frustum::Status{};
+        draw_scene(ctx, SceneDraw{*on_frame});
+        return fog ? fog_pass_.apply(ctx, frame, *on_frame, fog->params) : frustum::Status{};
     case Effect::Portal:
     case Effect::Recursion: {
         auto group = link_group(effect, options, cameras.main.pair);
@@ -241,7 +266,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         const LinkGroup& g = **group;
         const int depth = effect == Effect::Portal ? 1 : options.recursion_depth;
         auto nodes = plan_view_tree(cameras.main.pair, g.links,
-                                    ViewTreeRequest{depth, frame.width(), frame.height(), ViewBounds::Tight});
+                                    ViewTreeRequest{depth, full_width_px, full_height_px, ViewBounds::Tight});
         if (!nodes) {
             return frustum::Error{nodes.error()};
         }
@@ -254,7 +279,7 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
     case Effect::Frustum: {
         std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
         if (mirror_) {
-            auto reflection = plan_reflection(*mirror_, cameras.main.pair, frame.width(), frame.height(),
+            auto reflection = plan_reflection(*mirror_, cameras.main.pair, full_width_px, full_height_px,
                                               options.mirror_method, bounds_);
             if (!reflection) {
                 return reflection.take_error();
@@ -263,7 +288,11 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
                 overlays.push_back({(*reflection)->pair, kReflectionFrustumColor});
             }
         }
-        return draw_frustum_view(ctx, cameras.overview.pair, overlays, line_style(bounds_));
+        auto viewer = crop_to_window(cameras.overview.pair, window);
+        if (!viewer) {
+            return viewer.take_error_in("render::Renderer::render_into()");
+        }
+        return draw_frustum_view(ctx, *viewer, overlays, line_style(bounds_));
     }
     }
     return {};

@@ -10,6 +10,7 @@
 #include "plan/effect.hpp"
 #include "plan/effect_params.hpp"
 #include "render/fog_pass.hpp"
+#include "render/frame_window.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/non_affine_pass.hpp"
 #include "render/pass_context.hpp"
@@ -18,6 +19,7 @@
 #include "plan/scene_fit.hpp"
 #include "plan/link_moves.hpp"
 #include "plan/view_links.hpp"
+#include "plan/split_geometry.hpp"
 #include "plan/world_geometry.hpp"
 
 #include <frustum/result.hpp>
@@ -80,6 +82,15 @@ public:
     frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
                                 const gl::OffscreenTarget& frame) const;
 
+    // As render_into(), with `frame` holding window.rect of a
+    // window.full_width_px x window.full_height_px frame (a poster tile,
+    // poster.hpp): every effect is planned for the whole frame and the target
+    // gets its crop (§5.1), the same pixels a direct render of the whole
+    // frame has there. Errors: a window outside the frame or not the
+    // target's size.
+    frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+                                const gl::OffscreenTarget& frame, const FrameWindow& window) const;
+
     // Moves the mirror for every later frame by `motion`, a rigid world
     // transform (rotation + translation) relative to where the scene put it;
     // the identity puts it back. Its rectangle, its surface instance and the
@@ -91,6 +102,9 @@ public:
 
     // The depth range render() hands the GPU for `path` on this context.
     frustum::DepthRange gpu_depth_range(DepthPath path) const;
+
+    // The GL table the renderer draws with (render_poster() makes its tiles with it).
+    const gl::Functions& functions() const { return *fn_; }
 
     // For tests that draw with the passes directly.
     const GpuScene& gpu_scene() const { return gpu_scene_; }
@@ -118,6 +132,7 @@ private:
     FogPass fog_pass_;
     std::optional<scene::MirrorRect> mirror_;
     scene::Bounds bounds_;
+    std::vector<scene::Bounds> boxes_; // instance_boxes(): where placed links look for what is in front
     // Where the scene put the mirror and the instances (move_mirror() starts
     // from these), and which instances it moved last.
     std::optional<scene::MirrorRect> scene_mirror_;
@@ -131,7 +146,9 @@ private:
     mutable TargetPool recursion_targets_;
     frustum::Result<const LinkGroup*> link_group(Effect effect, const RenderOptions& options,
                                                  const frustum::MatrixPair<float>& camera) const;
-    WorldGeometry object_geometry_;       // nonaffine effect, placed by gpu_scene_'s instances per frame
+    // Nonaffine effect: the scene's triangles placed by gpu_scene_'s instances
+    // and split, kept while they and the fitted edge length stay (mutable like the links).
+    mutable SplitGeometryCache nonaffine_geometry_;
 };
 
 } // namespace render

@@ -21,11 +21,24 @@ frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& fr
     set_frame_state(ctx);
     clear_frame(ctx);
     fn.Enable(GL_SCISSOR_TEST);
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
     for (const frustum::Tile<float>& tile : tiles) {
+        // The tiles are the whole frame's; the target draws the part of each
+        // inside its window, with the tile's pair cropped to that part.
+        const PixelRect tile_rect{tile.x_px, tile.y_px, tile.width_px, tile.height_px};
+        const auto part = intersect(tile_rect, window.rect);
+        if (!part) {
+            continue;
+        }
+        auto pair = crop_part(tile.pair, tile_rect, *part);
+        if (!pair) {
+            return pair.take_error_in(where);
+        }
         // Each tile draws only its own pixels.
-        fn.Viewport(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
-        fn.Scissor(tile.x_px, tile.y_px, tile.width_px, tile.height_px);
-        SceneDraw scene{tile.pair};
+        const PixelRect r = in_target(window, *part);
+        fn.Viewport(r.x, r.y, r.width, r.height);
+        fn.Scissor(r.x, r.y, r.width, r.height);
+        SceneDraw scene{*pair};
         scene.skip_instance = skip_instance;
         draw_scene(ctx, scene);
     }
@@ -34,19 +47,24 @@ frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& fr
     return gl::check_error(fn, where);
 }
 
-void draw_tile_borders(const PassContext& ctx, const std::vector<frustum::Tile<float>>& tiles,
-                       const glm::vec4& color) {
+void draw_tile_borders(const PassContext& ctx, const FrameWindow& window,
+                       const std::vector<frustum::Tile<float>>& tiles, const glm::vec4& color) {
     const gl::Functions& fn = ctx.fn;
     fn.Enable(GL_SCISSOR_TEST);
     fn.ClearColor(color.r, color.g, color.b, color.a);
-    for (const frustum::Tile<float>& tile : tiles) {
-        if (tile.x_px > 0) {
-            fn.Scissor(tile.x_px, tile.y_px, 1, tile.height_px);
+    const auto paint = [&](const PixelRect& line) {
+        if (const auto part = intersect(line, window.rect)) {
+            const PixelRect r = in_target(window, *part);
+            fn.Scissor(r.x, r.y, r.width, r.height);
             fn.Clear(GL_COLOR_BUFFER_BIT);
         }
+    };
+    for (const frustum::Tile<float>& tile : tiles) {
+        if (tile.x_px > 0) {
+            paint({tile.x_px, tile.y_px, 1, tile.height_px});
+        }
         if (tile.y_px > 0) {
-            fn.Scissor(tile.x_px, tile.y_px, tile.width_px, 1);
-            fn.Clear(GL_COLOR_BUFFER_BIT);
+            paint({tile.x_px, tile.y_px, tile.width_px, 1});
         }
     }
     fn.Disable(GL_SCISSOR_TEST);
@@ -55,14 +73,15 @@ void draw_tile_borders(const PassContext& ctx, const std::vector<frustum::Tile<f
 frustum::Status draw_tiled_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
                                  const frustum::MatrixPair<float>& camera, int columns, int rows, bool borders) {
     constexpr const char* kWhere = "render::draw_tiled_frame()";
-    auto tiles = frustum::crop_tiles(camera, frame.width(), frame.height(), columns, rows);
+    const FrameWindow window = window_of(ctx, frame.width(), frame.height());
+    auto tiles = frustum::crop_tiles(camera, window.full_width_px, window.full_height_px, columns, rows);
     if (!tiles) {
         return tiles.take_error_in(kWhere);
     }
     if (auto status = draw_tiles(ctx, frame, *tiles, -1, kWhere); !status || !borders) {
         return status;
     }
-    draw_tile_borders(ctx, *tiles, kTileBorderColor);
+    draw_tile_borders(ctx, window, *tiles, kTileBorderColor);
     frame.bind();
     return gl::check_error(ctx.fn, kWhere);
 }

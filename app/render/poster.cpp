@@ -1,0 +1,168 @@
+#include "render/poster.hpp"
+
+#include "render/frame_window.hpp"
+
+#include <gl/offscreen_target.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <utility>
+
+// Why kMaxPosterSidePx is 65536 (2^16) per side:
+// - Time: llvmpipe's rate (tests/gl/poster_slow/, docs/performance.md)
+//   makes a 65536 x 65536 poster (4295 Mpx) hours of work; larger is not a
+//   render anyone waits for on this renderer.
+// - Float crop offsets: a tile's pair is the whole frame's cropped in float
+//   (eq. 14-15, scale W / bw up to 65536 for a 1-pixel tile). The rounding
+//   of a clip position grows with W / bw; tests/gl/poster_slow/ measures
+//   how far a world point lands from where the double-precision frame puts
+//   it, at 65536 in 4096-pixel tiles.
+// - Sizes: 65536^2 x 4 bytes = 16 GiB of pixels: every byte count here is
+//   std::size_t, and 65536 fits the int pixel coordinates of GL
+//   (glViewport, glScissor) and of frustum::Tile with room to spare.
+namespace render {
+namespace {
+
+constexpr const char* kLayout = "render::poster_layout()";
+constexpr const char* kRender = "render::render_poster()";
+
+// The largest tile side used without --poster-tile, whatever the context allows.
+constexpr int kMaxAutoTileSidePx = 4096;
+// One row of tiles in memory (width_px x tile_height_px RGBA8) at most, and
+// one tile's pixels at most: with 4x MSAA llvmpipe keeps a tile's colour
+// and depth samples in RAM (4 Mpx x 4 samples x 8 bytes = 128 MiB).
+constexpr std::int64_t kRowBudgetBytes = std::int64_t(32) << 20;
+constexpr std::int64_t kTileBudgetPx = std::int64_t(4) << 20;
+
+std::string size_text(int width_px, int height_px) {
+    return std::to_string(width_px) + "x" + std::to_string(height_px);
+}
+
+// The context's largest target: renderbuffer, texture and viewport limits.
+std::pair<int, int> largest_target(const gl::Functions& fn) {
+    GLint renderbuffer = 0, texture = 0, viewport[2] = {0, 0};
+    fn.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    fn.GetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    fn.GetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    const int side = std::min(renderbuffer, texture);
+    return {std::min(side, static_cast<int>(viewport[0])), std::min(side, static_cast<int>(viewport[1]))};
+}
+
+frustum::Status check_frame_size(int width_px, int height_px, const char* where) {
+    if (width_px < 1 || height_px < 1 || width_px > kMaxPosterSidePx || height_px > kMaxPosterSidePx) {
+        return frustum::Error{std::string(where) + ": size must be 1x1 to " +
+                              size_text(kMaxPosterSidePx, kMaxPosterSidePx) + ", got " +
+                              size_text(width_px, height_px)};
+    }
+    return {};
+}
+
+// Copies a tile's image (rows top to bottom) into `rows` at column x_px.
+void copy_tile(const image::Image& tile, image::Image& rows, int x_px) {
+    const std::size_t tile_row = static_cast<std::size_t>(tile.width) * 4;
+    const std::size_t row = static_cast<std::size_t>(rows.width) * 4;
+    for (int y = 0; y < tile.height; ++y) {
+        std::memcpy(rows.rgba.data() + static_cast<std::size_t>(y) * row + static_cast<std::size_t>(x_px) * 4,
+                    tile.rgba.data() + static_cast<std::size_t>(y) * tile_row, tile_row);
+    }
+}
+
+} // namespace
+
+frustum::Result<PosterLayout> poster_layout(const gl::Functions& fn, int width_px, int height_px,
+                                            std::optional<std::pair<int, int>> requested_tile_px) {
+    if (auto status = check_frame_size(width_px, height_px, kLayout); !status) {
+        return status.take_error();
+    }
+    const auto [largest_w, largest_h] = largest_target(fn);
+    PosterLayout layout{width_px, height_px, 0, 0};
+    if (requested_tile_px) {
+        const auto [w, h] = *requested_tile_px;
+        if (w < 1 || h < 1) {
+            return frustum::Error{std::string(kLayout) + ": tile must be at least 1x1, got " + size_text(w, h)};
+        }
+        if (w > largest_w || h > largest_h) {
+            return frustum::Error{std::string(kLayout) + ": tile " + size_text(w, h) +
+                                  " exceeds the context's largest target " + size_text(largest_w, largest_h)};
+        }
+        layout.tile_width_px = std::min(w, width_px);
+        layout.tile_height_px = std::min(h, height_px);
+        return layout;
+    }
+    layout.tile_width_px = std::min({width_px, largest_w, kMaxAutoTileSidePx});
+    const std::int64_t by_row = kRowBudgetBytes / (std::int64_t(width_px) * 4);
+    const std::int64_t by_tile = kTileBudgetPx / layout.tile_width_px;
+    layout.tile_height_px = static_cast<int>(std::max<std::int64_t>(
+        1, std::min({by_row, by_tile, std::int64_t(height_px), std::int64_t(largest_h),
+                     std::int64_t(kMaxAutoTileSidePx)})));
+    return layout;
+}
+
+frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+                              const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
+                              const PosterProgress& progress) {
+    if (auto status = check_frame_size(layout.width_px, layout.height_px, kRender); !status) {
+        return status;
+    }
+    if (layout.tile_width_px < 1 || layout.tile_height_px < 1 || layout.tile_width_px > layout.width_px ||
+        layout.tile_height_px > layout.height_px) {
+        return frustum::Error{std::string(kRender) + ": tile must be 1x1 to the frame's " +
+                              size_text(layout.width_px, layout.height_px) + ", got " +
+                              size_text(layout.tile_width_px, layout.tile_height_px)};
+    }
+    const gl::Functions& fn = renderer.functions();
+    auto samples = gl::choose_samples(fn, options.msaa_samples);
+    if (!samples) {
+        return samples.take_error_in(kRender);
+    }
+    const int columns = (layout.width_px + layout.tile_width_px - 1) / layout.tile_width_px;
+    const int rows = (layout.height_px + layout.tile_height_px - 1) / layout.tile_height_px;
+    const int total = columns * rows;
+    // At most four tile sizes (the last column and row are cut): a target is
+    // made again only when the size changes.
+    std::optional<gl::OffscreenTarget> target;
+    int done = 0;
+    for (int row = 0; row < rows; ++row) {
+        const int top_px = row * layout.tile_height_px; // from the frame's top
+        const int height_px = std::min(layout.tile_height_px, layout.height_px - top_px);
+        image::Image strip{layout.width_px, height_px,
+                           std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) *
+                                                     static_cast<std::size_t>(height_px) * 4)};
+        for (int column = 0; column < columns; ++column) {
+            const int x_px = column * layout.tile_width_px;
+            const int width_px = std::min(layout.tile_width_px, layout.width_px - x_px);
+            if (!target || target->width() != width_px || target->height() != height_px) {
+                target.reset(); // free the old one first
+                auto made = gl::OffscreenTarget::create(
+                    fn, {width_px, height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, *samples});
+                if (!made) {
+                    return made.take_error_in(kRender);
+                }
+                target = std::move(*made);
+            }
+            // GL counts rows from the bottom.
+            const FrameWindow window{layout.width_px, layout.height_px,
+                                     PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
+            if (auto status = renderer.render_into(effect, cameras, options, *target, window); !status) {
+                return status;
+            }
+            auto tile = target->read_rgba8();
+            if (!tile) {
+                return tile.take_error_in(kRender);
+            }
+            copy_tile(*tile, strip, x_px);
+            ++done;
+            if (progress) {
+                progress(done, total);
+            }
+        }
+        if (auto status = sink(strip, top_px); !status) {
+            return status;
+        }
+    }
+    return {};
+}
+
+} // namespace render

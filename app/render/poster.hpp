@@ -1,0 +1,59 @@
+// Posters (paper §5.1): a frame of any size up to kMaxPosterSidePx per side,
+// larger than one GPU target, rendered as crop tiles of ONE camera and handed
+// to the caller one row of tiles at a time, top to bottom, so memory does not
+// grow with the frame's height. Every effect is planned once for the whole
+// frame (the mirror's reflection, the portal's views, the recursion levels,
+// the curved patches, the lens tiles, the non-affine fit) and each tile draws
+// its crop of that plan, so no seam and no per-tile change of a derived
+// parameter shows.
+#pragma once
+
+#include "render/renderer.hpp"
+
+#include <frustum/result.hpp>
+#include <gl/functions.hpp>
+#include <image/image.hpp>
+
+#include <functional>
+#include <optional>
+
+namespace render {
+
+// 65536 per side: see poster.cpp for why.
+inline constexpr int kMaxPosterSidePx = 65536;
+
+// The whole frame and the size of one tile (one GPU target); the tiles of
+// the last column and row are cut to the frame (narrower or lower).
+struct PosterLayout {
+    int width_px = 0;
+    int height_px = 0;
+    int tile_width_px = 0;
+    int tile_height_px = 0;
+};
+
+// The tile size for a width_px x height_px frame: the requested one
+// (--poster-tile), else the largest the context's targets hold (at most
+// 4096 x 4096) with the tile height cut so that one row of tiles (width_px x
+// tile_height_px RGBA8) stays within a fixed budget stated in poster.cpp.
+// Errors name the value and the limit, e.g.
+// "render::poster_layout(): tile 9000x512 exceeds the context's largest target 8192x8192".
+frustum::Result<PosterLayout> poster_layout(const gl::Functions& fn, int width_px, int height_px,
+                                            std::optional<std::pair<int, int>> requested_tile_px = {});
+
+// Receives each finished row of tiles: `rows` is layout.width_px wide and as
+// high as that row of tiles, its top row is the frame's row `top_px`. An
+// error stops the poster and is returned by render_poster().
+using PosterRowSink = std::function<frustum::Status(const image::Image& rows, int top_px)>;
+
+// Called after each tile with the tiles done so far and in all.
+using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
+
+// Renders `effect` as a layout.width_px x layout.height_px frame
+// (options.width_px / height_px are ignored; options.msaa_samples as in
+// Renderer::render()); `cameras` are made for the whole frame's aspect
+// ratio. Each tile is multisampled and resolved as a direct render is.
+frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+                              const RenderOptions& options, const PosterLayout& layout,
+                              const PosterRowSink& sink, const PosterProgress& progress = {});
+
+} // namespace render
