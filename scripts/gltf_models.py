@@ -406,6 +406,91 @@ def torus_quantized(normalized=True):
     return g
 
 
+def box_meshes(g, colors):
+    """One unit cube (box_arrays(0.5), counter-clockwise from outside) per
+    colour, sharing its accessors: name -> mesh index."""
+    pos, nrm, _, idx = box_arrays(0.5)
+    attributes = {"POSITION": g.accessor(pos, "VEC3"), "NORMAL": g.accessor(nrm, "VEC3")}
+    indices = g.indices(idx)
+    return {name: g.mesh([{"attributes": dict(attributes), "indices": indices, "material": g.material(rgba, name=name)}],
+                         name=name)
+            for name, rgba in colors.items()}
+
+
+def place_boxes(g, meshes, boxes):
+    # boxes: (name, mesh name, centre, size); each a node scaling the unit cube.
+    for name, mesh, centre, size in boxes:
+        g.node({"name": name, "mesh": meshes[mesh], "translation": list(centre), "scale": list(size)})
+
+
+def look(yaw_rad, pitch_rad):
+    """The rotation quaternion [x, y, z, w] of a camera turned by yaw about +Y,
+    then pitched about its own x (glTF cameras look down -Z)."""
+    cy, sy = math.cos(yaw_rad / 2), math.sin(yaw_rad / 2)
+    cp, sp = math.cos(pitch_rad / 2), math.sin(pitch_rad / 2)
+    # q_yaw * q_pitch with q_yaw = (0, sy, 0, cy), q_pitch = (sp, 0, 0, cp)
+    return [round(v, 9) for v in (cy * sp, sy * cp, -sy * sp, cy * cp)]
+
+
+def room(zfar=50.0):
+    # A closed room seen from inside (issue 33): 6 m wide (x), 3 m high, 8 m
+    # deep (z), walls, floor and ceiling 0.1 m thick boxes of their own
+    # colours, furniture boxes (a table, a cabinet, a sofa behind the
+    # camera, a lamp column), and a perspective camera named "inside" at
+    # eye height 1.6 m near the back wall looking into the room, turned 20
+    # degrees left and 8 degrees down. zfar None: no far plane (infinite).
+    g = Gltf(camera=False, generator=GENERATOR)
+    meshes = box_meshes(g, {"floor": (0.55, 0.4, 0.3, 1), "ceiling": (0.92, 0.92, 0.9, 1),
+                            "wall_front": (0.35, 0.55, 0.75, 1), "wall_back": (0.8, 0.45, 0.35, 1),
+                            "wall_side": (0.85, 0.8, 0.55, 1), "furniture": (0.3, 0.6, 0.35, 1),
+                            "dark": (0.2, 0.18, 0.22, 1)})
+    place_boxes(g, meshes, [
+        ("floor", "floor", (0, -0.05, 0), (6.2, 0.1, 8.2)),
+        ("ceiling", "ceiling", (0, 3.05, 0), (6.2, 0.1, 8.2)),
+        ("wall_front", "wall_front", (0, 1.5, -4.05), (6.2, 3.2, 0.1)),
+        ("wall_back", "wall_back", (0, 1.5, 4.05), (6.2, 3.2, 0.1)),
+        ("wall_left", "wall_side", (-3.05, 1.5, 0), (0.1, 3.2, 8.2)),
+        ("wall_right", "wall_side", (3.05, 1.5, 0), (0.1, 3.2, 8.2)),
+        ("table", "furniture", (0.8, 0.375, -1.5), (1.4, 0.75, 0.8)),
+        ("cabinet", "dark", (-2.6, 0.9, -3.4), (0.7, 1.8, 0.5)),
+        ("sofa", "furniture", (0.5, 0.4, 3.3), (2.2, 0.8, 0.9)),
+        ("lamp", "dark", (2.4, 0.9, -3.2), (0.2, 1.8, 0.2)),
+    ])
+    perspective = {"yfov": 0.9, "aspectRatio": 16 / 9, "znear": 0.1}
+    if zfar is not None:
+        perspective["zfar"] = zfar
+    g.j["cameras"] = [{"type": "perspective", "name": "inside", "perspective": perspective}]
+    g.node({"name": "eye", "camera": 0, "translation": [0.4, 1.6, 2.6],
+            "rotation": look(math.radians(20), math.radians(-8))})
+    return g
+
+
+def street(znear=0.05, zfar=1e6):
+    # A street of blocks seen from street level (issue 33): a ground slab
+    # 40 m x 120 m, two rows of building boxes either side of a 12 m street
+    # running along -z, 8 to 26 m high, and a camera named "street" at eye
+    # height 1.7 m 35 m into the street looking down it. The camera
+    # is a CAD export's: znear 0.05 m, zfar 1e6 m (a ratio of 2e7).
+    g = Gltf(camera=False, generator=GENERATOR)
+    meshes = box_meshes(g, {"ground": (0.35, 0.35, 0.37, 1), "brick": (0.7, 0.4, 0.3, 1),
+                            "stone": (0.75, 0.72, 0.65, 1), "glass": (0.4, 0.55, 0.7, 1)})
+    boxes = [("ground", "ground", (0, -0.05, -50), (40, 0.1, 120))]
+    heights = [14, 22, 9, 18, 26, 12, 16, 8, 20, 11]
+    kinds = ["brick", "stone", "glass"]
+    for side, x in (("left", -12.5), ("right", 12.5)):
+        z = 5.0
+        for i, h in enumerate(heights if side == "left" else heights[::-1]):
+            depth = 9.0 + 2.0 * ((i * 7) % 3)
+            boxes.append(("%s_%d" % (side, i), kinds[(i + (side == "right")) % 3],
+                          (x, h / 2, z - depth / 2), (13.0, h, depth - 1.0)))
+            z -= depth
+    place_boxes(g, meshes, boxes)
+    g.j["cameras"] = [{"type": "perspective", "name": "street",
+                       "perspective": {"yfov": 0.8, "aspectRatio": 16 / 9, "znear": znear, "zfar": zfar}}]
+    g.node({"name": "eye", "camera": 0, "translation": [-1.5, 1.7, -30.0], "rotation": look(math.radians(-6), 0.0)})
+    return g
+
+
 # Written only on request (make_feature_gltf.py --quantized DIR), by the
 # tests that load them next to torus.gltf.
 QUANTIZED_MODELS = {
@@ -425,8 +510,11 @@ MODELS = {
     "multiple_scenes.gltf": multiple_scenes,
     "nodes.gltf": nodes,
     "primitive_modes.gltf": primitive_modes,
+    "room.gltf": room,
+    "room_no_zfar.gltf": lambda: room(zfar=None),
     "skin.gltf": skin,
     "sparse.gltf": sparse,
+    "street.gltf": street,
     "torus.gltf": torus,
     "torus.glb": torus_glb,
     "triangle.gltf": triangle,

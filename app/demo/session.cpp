@@ -2,6 +2,7 @@
 
 #include <scene/load_gltf.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -55,17 +56,21 @@ std::optional<Failure> Session::open(const Settings& settings, const Reporter& r
         reporter.note(std::string("scene origin: ") + origin +
                       " m in the file's coordinates; the positions below are relative to it");
     }
-    if (how.cameras_at_size) {
-        // Stereo: the cameras are made for one eye's half of the image.
-        const int eye_width_px = settings.stereo ? settings.width_px / 2 : settings.width_px;
-        auto made = render::make_cameras(scene, camera_index, eye_width_px, settings.height_px);
-        if (!made) {
-            return runtime(made.error());
-        }
-        cameras.emplace(std::move(*made));
+    // Stereo: the cameras are made for one eye's half of the image. The
+    // window makes its own per framebuffer; these place its mirror.
+    const int eye_width_px = std::max(1, settings.stereo ? settings.width_px / 2 : settings.width_px);
+    auto made = render::make_cameras(scene, camera_index, eye_width_px, settings.height_px);
+    if (!made) {
+        return runtime(made.error());
+    }
+    if (made->far_note) {
+        reporter.note(*made->far_note);
     }
     // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
-    effects = render::resolve_effects(settings, scene);
+    effects = render::resolve_effects(settings, scene, &made->main.pair);
+    if (how.cameras_at_size) {
+        cameras.emplace(std::move(*made));
+    }
     if (effects.placed) {
         reporter.note(*effects.placed);
     }

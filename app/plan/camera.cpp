@@ -1,5 +1,7 @@
 #include "plan/camera.hpp"
 
+#include "plan/number_text.hpp"
+
 #include <frustum/projection.hpp>
 #include <frustum/queries.hpp>
 
@@ -53,7 +55,43 @@ scene::Bounds including(scene::Bounds bounds, const glm::vec3& point) {
     return bounds;
 }
 
+constexpr float kDerivedFarMargin = 1.05f; // the derived far plane: 5% beyond the farthest corner
+constexpr float kDerivedFarMinPerNear = 2.0f;
+
+// What far_note says: the file's far plane and the one the effects use.
+std::string far_note_text(const scene::Camera& camera, float far_m) {
+    const std::string had = camera.zfar_m ? "zfar " + number_text(*camera.zfar_m) + " is " +
+                                                number_text(*camera.zfar_m / camera.znear_m) + " x its znear " +
+                                                number_text(camera.znear_m) + " (a float pair holds up to " +
+                                                number_text(kMaxFarPerNear) + " x)"
+                                          : "no zfar (an infinite far plane)";
+    return "camera '" + camera.name + "': " + had + "; every effect uses far = " + number_text(far_m) +
+           " m, derived from the scene's bounds (1.05 x the distance from the eye to their farthest corner)";
+}
+
 } // namespace
+
+std::optional<float> derived_far_m(const scene::Camera& camera, const scene::Bounds& bounds) {
+    const float near_m = camera.znear_m;
+    // An orthographic pair's depth is linear: only a missing far plane needs one.
+    const bool perspective = camera.kind == scene::Camera::Kind::Perspective;
+    if (camera.zfar_m && (!perspective || *camera.zfar_m <= kMaxFarPerNear * near_m)) {
+        return std::nullopt;
+    }
+    const glm::vec3 eye(camera.camera_to_world[3]);
+    float reach_m = 0.0f;
+    for (const glm::vec3& corner : scene::corners(bounds)) {
+        reach_m = std::max(reach_m, glm::length(corner - eye));
+    }
+    float far_m = std::max(kDerivedFarMargin * reach_m, kDerivedFarMinPerNear * near_m);
+    if (perspective) {
+        far_m = std::min(far_m, kMaxFarPerNear * near_m);
+    }
+    if (camera.zfar_m) {
+        far_m = std::min(far_m, *camera.zfar_m);
+    }
+    return far_m;
+}
 
 frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& camera, float image_aspect) {
     const auto depth = frustum::DepthRange::ZeroToOne;
@@ -125,7 +163,16 @@ frustum::Result<int> find_camera(const scene::Scene& scene, const std::optional<
 frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera, int width_px, int height_px) {
     const float aspect = static_cast<float>(width_px) / static_cast<float>(height_px);
     const bool from_file = main_camera >= 0 && static_cast<std::size_t>(main_camera) < scene.cameras.size();
-    auto main = from_file ? camera_pair(scene.cameras[static_cast<std::size_t>(main_camera)], aspect)
+    std::optional<std::string> far_note;
+    std::optional<scene::Camera> file_camera;
+    if (from_file) {
+        file_camera = scene.cameras[static_cast<std::size_t>(main_camera)];
+        if (const auto far_m = derived_far_m(*file_camera, scene.world_bounds)) {
+            far_note = far_note_text(*file_camera, *far_m);
+            file_camera->zfar_m = *far_m;
+        }
+    }
+    auto main = from_file ? camera_pair(*file_camera, aspect)
                           : framing_camera(scene.world_bounds, kFrontDirection, aspect);
     if (!main) {
         return main.take_error();
@@ -138,7 +185,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
         if (!overview) {
             return overview.take_error();
         }
-        return Cameras{{main_name, *main}, {"overview", *overview}};
+        return Cameras{{main_name, *main}, {"overview", *overview}, far_note};
     }
     // Automatic: frame the scene together with the main camera's eye (when
     // finite: an orthographic eye is at infinity).
@@ -148,7 +195,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     if (!overview) {
         return overview.take_error();
     }
-    return Cameras{{main_name, *main}, {"automatic overview", *overview}};
+    return Cameras{{main_name, *main}, {"automatic overview", *overview}, far_note};
 }
 
 } // namespace render

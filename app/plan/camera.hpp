@@ -47,9 +47,29 @@ struct Cameras {
     // For the frustum view: the camera named "overview" when it is not the
     // main camera, else a framing camera that also takes in the main eye.
     NamedCamera overview;
+    // Set when the file camera's far plane was replaced (derived_far_m()):
+    // which far it had and which it got, for main to print.
+    std::optional<std::string> far_note;
 };
 
-// main_camera: from find_camera() (-1: a framing camera from the front).
+// The largest far / near a float matrix pair keeps apart from an infinite
+// far plane with some precision (docs/any-scene.md, "Far planes"): the
+// perspective's depth terms hold n / (f - n) beside 1, whose float step is
+// 2^-24 = 6e-8; at f / n = 1e5 that term (1e-5) is still good to 0.6%, at
+// the 2e7 of a CAD export (5e-8) it rounds away and the pair is infinite.
+inline constexpr float kMaxFarPerNear = 1e5f;
+
+// The far distance (m) the effects use for a file camera whose far plane is
+// absent, or (perspective) more than kMaxFarPerNear times its near one:
+// 1.05 times the distance from the eye to the farthest corner of `bounds`
+// (the whole scene stays in front of it), at least 2 near, at most (for a
+// perspective) kMaxFarPerNear near and the file's own far. Empty when the
+// file's far plane is kept.
+std::optional<float> derived_far_m(const scene::Camera& camera, const scene::Bounds& bounds);
+
+// main_camera: from find_camera() (-1: a framing camera from the front). A
+// file camera without a usable far plane gets derived_far_m()'s, and
+// far_note says so.
 frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera, int width_px, int height_px);
 
 } // namespace render

@@ -5,8 +5,9 @@
 
 namespace render {
 
-ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene) {
-    ResolvedEffects resolved{params, place_mirror(scene, params.mirror_place), std::nullopt};
+ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene,
+                                const frustum::MatrixPair<float>* camera) {
+    ResolvedEffects resolved{params, place_mirror(scene, params.mirror_place, camera), std::nullopt};
     EffectParams& p = resolved.params;
     if (scene.mirror) {
         const float limit_m = max_sagitta_m(*scene.mirror, p.curved.shape);

@@ -58,7 +58,10 @@ struct ResolvedEffects {
 // each scene file) and the reports call it. (Counts per pixel are the
 // frame's: render refuses a --tiles or --lens-grid its --size cannot hold,
 // the window's frame caps them at each framebuffer size, window/frame.hpp.)
-ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene);
+// `camera`, the frame's main camera when known, lets a derived mirror stand
+// where that camera sees it (place_mirror()).
+ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene,
+                                const frustum::MatrixPair<float>* camera = nullptr);
 
 // The stereo rig params ask for, the convergence derived from the scene's
 // mirror and bounds as seen from `camera` when unset; empty without stereo.

@@ -32,11 +32,19 @@ bool eye_in_front(const frustum::MatrixPair<float>& pair, const frustum::Plane<f
     return glm::dot(plane.abcd, eye / eye.w) > 0.0f;
 }
 
+// What frustum::clip_oblique() (src/oblique_clip.cpp) says when the link's
+// plane has the whole view on its near side: through that link nothing is
+// left to see, so the branch ends there (an empty view, not a failure).
+constexpr const char* kNothingVisible = "clip plane leaves no part of the frustum visible";
+
+bool nothing_visible(const std::string& error) { return error.find(kNothingVisible) != std::string::npos; }
+
 struct Planner {
     const std::vector<ViewLink>& links;
     const ViewTreeRequest& request;
     std::vector<ViewNode> nodes;
     std::vector<frustum::CropRect<float>> visible; // per node: its tight rectangle
+    std::optional<int> empty_from_level;           // the first level a branch ended at for want of a view
 
     frustum::Status visit(int index) {
         if (nodes[static_cast<std::size_t>(index)].level >= request.depth) {
@@ -66,8 +74,14 @@ struct Planner {
             if (!rect) {
                 continue;
             }
-            if (auto status = add_child(index, static_cast<int>(li), *rect); !status) {
-                return status;
+            auto added = add_child(index, static_cast<int>(li), *rect);
+            if (!added) {
+                return frustum::Error{added.error()};
+            }
+            if (!*added) {
+                const int level = node.level + 1;
+                empty_from_level = empty_from_level ? std::min(*empty_from_level, level) : level;
+                continue;
             }
             if (auto status = visit(static_cast<int>(nodes.size()) - 1); !status) {
                 return status;
@@ -76,7 +90,8 @@ struct Planner {
         return {};
     }
 
-    frustum::Status add_child(int parent, int link_index, const frustum::CropRect<float>& rect) {
+    // false: through the link nothing of the view is left (kNothingVisible).
+    frustum::Result<bool> add_child(int parent, int link_index, const frustum::CropRect<float>& rect) {
         const ViewNode& node = nodes[static_cast<std::size_t>(parent)];
         const ViewLink& link = links[static_cast<std::size_t>(link_index)];
         const bool mirror = link.kind == ViewLink::Kind::Mirror;
@@ -86,6 +101,9 @@ struct Planner {
         auto full = mirror ? frustum::mirror(node.unclipped, plane)
                            : frustum::portal(node.unclipped, link.entry, link.exit);
         if (!culling || !full) {
+            if (nothing_visible(!culling ? culling.error() : full.error())) {
+                return false;
+            }
             return frustum::Error{"render::plan_view_tree(): level " + std::to_string(node.level + 1) + ": " +
                                   (!culling ? culling.error() : full.error())};
         }
@@ -114,7 +132,7 @@ struct Planner {
         }
         nodes.push_back(child);
         visible.push_back(rect);
-        return {};
+        return true;
     }
 };
 
@@ -123,6 +141,15 @@ struct Planner {
 frustum::Result<std::vector<ViewNode>> plan_view_tree(const frustum::MatrixPair<float>& camera,
                                                       const std::vector<ViewLink>& links,
                                                       const ViewTreeRequest& request) {
+    auto plan = plan_views(camera, links, request);
+    if (!plan) {
+        return frustum::Error{plan.error()};
+    }
+    return std::move(plan->nodes);
+}
+
+frustum::Result<ViewTreePlan> plan_views(const frustum::MatrixPair<float>& camera, const std::vector<ViewLink>& links,
+                                         const ViewTreeRequest& request) {
     if (request.depth < 0 || request.depth > kMaxRecursionDepth) {
         return frustum::Error{"render::plan_view_tree(): depth " + std::to_string(request.depth) +
                               " must be in 0..8"};
@@ -137,11 +164,32 @@ frustum::Result<std::vector<ViewNode>> plan_view_tree(const frustum::MatrixPair<
     if (request.bounds == ViewBounds::Tight) {
         root.cull = frustum::planes(camera);
     }
-    Planner planner{links, request, {root}, {root.rect}};
+    Planner planner{links, request, {root}, {root.rect}, std::nullopt};
     if (auto status = planner.visit(0); !status) {
         return frustum::Error{status.error()};
     }
-    return std::move(planner.nodes);
+    return ViewTreePlan{std::move(planner.nodes), planner.empty_from_level};
+}
+
+frustum::Result<std::optional<std::string>> recursion_end_note(const frustum::MatrixPair<float>& camera,
+                                                               const scene::Bounds& bounds,
+                                                               const std::vector<scene::Bounds>& boxes, LinkSet set,
+                                                               int depth, int width_px, int height_px) {
+    auto links = place_facing_links(camera, bounds, set, boxes);
+    if (!links) {
+        return frustum::Error{links.error()};
+    }
+    auto plan = plan_views(camera, *links, ViewTreeRequest{depth, width_px, height_px, ViewBounds::Tight});
+    if (!plan) {
+        return frustum::Error{plan.error()};
+    }
+    if (!plan->empty_from_level) {
+        return std::optional<std::string>{};
+    }
+    const int empty = *plan->empty_from_level;
+    const std::string drawn = empty > 1 ? "; levels 1.." + std::to_string(empty - 1) + " drawn" : "";
+    return std::optional<std::string>{"recursion: levels " + std::to_string(empty) + ".." + std::to_string(depth) +
+                                      " are empty (through the links the view leaves nothing visible)" + drawn};
 }
 
 std::vector<int> children_of(const std::vector<ViewNode>& nodes, int index) {

@@ -15,6 +15,7 @@
 #include <frustum/result.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace render {
@@ -60,11 +61,34 @@ struct ViewTreeRequest {
 // Nodes in depth-first order (a child after its parent). A link is seen by
 // a node when the node's eye is on the link's front and its quad's screen
 // rectangle is not empty; a node does not look back into the mirror it came
-// through (it would see that mirror's back). Errors: depth outside 0..8,
-// image sizes < 1, or an error of the library's operations.
+// through (it would see that mirror's back). A branch also ends, cleanly,
+// where the link's plane leaves nothing of the view beyond it (a view that
+// looks back along the corridor, or through a far plane the links reach):
+// that level and the deeper ones draw nothing there, the earlier ones draw.
+// Errors: depth outside 0..8, image sizes < 1, or an error of the library's
+// operations.
 frustum::Result<std::vector<ViewNode>> plan_view_tree(const frustum::MatrixPair<float>& camera,
                                                       const std::vector<ViewLink>& links,
                                                       const ViewTreeRequest& request);
+
+struct ViewTreePlan {
+    std::vector<ViewNode> nodes;        // plan_view_tree()'s
+    std::optional<int> empty_from_level; // the first level at which a branch ended with nothing visible
+};
+
+// plan_view_tree() with where it ended for want of a view (for --verbose).
+frustum::Result<ViewTreePlan> plan_views(const frustum::MatrixPair<float>& camera, const std::vector<ViewLink>& links,
+                                         const ViewTreeRequest& request);
+
+// For --verbose: the recursion effect's links as the renderer places them
+// for `camera` (place_facing_links() of `set`, unmoved) planned to `depth`
+// at the frame size; empty when every branch ran its course, else e.g.
+// "recursion: levels 3..4 are empty (through the links the view leaves
+// nothing visible); levels 1..2 drawn".
+frustum::Result<std::optional<std::string>> recursion_end_note(const frustum::MatrixPair<float>& camera,
+                                                               const scene::Bounds& bounds,
+                                                               const std::vector<scene::Bounds>& boxes, LinkSet set,
+                                                               int depth, int width_px, int height_px);
 
 // The children of node `index` (their indices into `nodes`).
 std::vector<int> children_of(const std::vector<ViewNode>& nodes, int index);

@@ -68,7 +68,8 @@ LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
         PassTiming timing{"recursion views (depth " + std::to_string(frame.options.recursion_depth) + ")", 0.0, ""};
         frustum::Result<std::vector<render::ViewNode>> nodes = frustum::Error{""};
         timing.cpu_us = microseconds([&] {
-            auto links = render::place_facing_links(camera, scene.world_bounds, frame.options.recursion_links);
+            auto links = render::place_facing_links(camera, scene.world_bounds, frame.options.recursion_links,
+                                                    render::instance_boxes(scene));
             if (!links) {
                 nodes = links.take_error();
                 return;

@@ -197,7 +197,7 @@ TEST_CASE("the generated files are what scripts/make_feature_gltf.py writes, and
             ++compared;
         }
     }
-    CHECK(compared == 9 + 16 + 7);
+    CHECK(compared == 9 + 19 + 7);
     // The two data folders hold only generated files (and their README).
     for (const char* folder : {"tests/data/gltf-features", "tests/data/gltf-models"}) {
         for (const auto& entry : std::filesystem::directory_iterator(repository / folder)) {

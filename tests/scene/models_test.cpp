@@ -48,7 +48,9 @@ TEST_CASE("every generated model loads with the expected mesh, instance, camera 
         {"index_types.gltf", 3, 3, 0, 0},   {"interleaved.gltf", 1, 1, 0, 1},
         {"morph.gltf", 1, 1, 0, 0},         {"multiple_scenes.gltf", 2, 1, 0, 0},
         {"nodes.gltf", 1, 4, 0, 0},         {"primitive_modes.gltf", 7, 7, 0, 0},
+        {"room.gltf", 7, 10, 1, 0},         {"room_no_zfar.gltf", 7, 10, 1, 0},
         {"skin.gltf", 1, 1, 0, 0},          {"sparse.gltf", 1, 1, 0, 0},
+        {"street.gltf", 4, 21, 1, 0},
         {"torus.gltf", 1, 1, 1, 1},         {"torus.glb", 1, 1, 1, 1},
         {"triangle.gltf", 1, 1, 0, 0},      {"triangle_without_indices.gltf", 1, 1, 0, 0},
     };
