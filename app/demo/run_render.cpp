@@ -13,6 +13,7 @@
 #include <plan/number_text.hpp>
 #include <render/renderer.hpp>
 #include <plan/scene_fit.hpp>
+#include <plan/view_tree.hpp>
 #include <render/stereo_render.hpp>
 #include <scene/load_gltf.hpp>
 
@@ -95,6 +96,14 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
     };
     for (render::Effect effect : request.effects) {
         const std::string name(render::to_string(effect));
+        if (request.verbose && effect == render::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
+            const auto end = render::recursion_end_note(cameras->main.pair, scene->world_bounds,
+                                                        render::instance_boxes(*scene), options.recursion_links,
+                                                        options.recursion_depth, request.width_px, request.height_px);
+            if (end && *end) {
+                reporter.note(**end);
+            }
+        }
         auto picture = stereo ? render::render_stereo(*renderer, effect, *cameras, options, *stereo)
                               : renderer->render(effect, *cameras, options);
         if (!picture) {
