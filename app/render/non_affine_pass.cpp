@@ -75,35 +75,54 @@ bool is_degenerate(const frustum::NonAffineFrustum<float>& frustum, const glm::v
     return !(d.x < -guard_m && d.y < -guard_m && d.z < -guard_m);
 }
 
+NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                const NonAffineOptions& options) {
+    NonAffineBatch batch;
+    // One flag per gathered vertex (bytes: no bit packing in the hot loop).
+    std::vector<unsigned char> degenerate(geometry.vertices.size(), 0);
+    if (options.cull) {
+        for (std::size_t v = 0; v < geometry.vertices.size(); ++v) {
+            degenerate[v] = is_degenerate(frustum, geometry.vertices[v].position, options.guard_m) ? 1 : 0;
+        }
+    }
+    for (std::size_t i = 0; i < geometry.split.primitives.size(); ++i) {
+        const WorldPrimitive& p = geometry.split.primitives[i];
+        const std::uint32_t base = geometry.bases[i];
+        const unsigned char* bad = degenerate.data() + base;
+        NonAffineBatch::Range range{static_cast<std::uint32_t>(batch.indices.size()), 0, i};
+        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+            ++batch.stats.triangles;
+            if (bad[p.indices[t]] | bad[p.indices[t + 1]] | bad[p.indices[t + 2]]) {
+                ++batch.stats.culled;
+                continue;
+            }
+            batch.indices.insert(batch.indices.end(),
+                                 {base + p.indices[t], base + p.indices[t + 1], base + p.indices[t + 2]});
+        }
+        range.count = static_cast<std::uint32_t>(batch.indices.size()) - range.first;
+        if (range.count > 0) {
+            batch.ranges.push_back(range);
+        }
+    }
+    return batch;
+}
+
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
                                                       const WorldGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,
                                                       const NonAffineOptions& options) {
-    const WorldGeometry split = subdivide(geometry, options.max_edge_m);
-    NonAffineStats stats;
-    std::vector<WorldVertex> vertices;
-    std::vector<GLuint> indices;
+    return draw_non_affine_frame(ctx, frame, SplitGeometry::build(geometry, options.max_edge_m), frustum, options);
+}
+
+frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                                      const SplitGeometry& geometry,
+                                                      const frustum::NonAffineFrustum<float>& frustum,
+                                                      const NonAffineOptions& options) {
+    const NonAffineBatch batch = batch_non_affine(geometry, frustum, options);
     std::vector<Range> ranges;
-    std::vector<bool> degenerate;
-    for (const WorldPrimitive& p : split.primitives) {
-        const auto base = static_cast<GLuint>(vertices.size());
-        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
-        degenerate.assign(p.vertices.size(), false);
-        if (options.cull) {
-            for (std::size_t v = 0; v < p.vertices.size(); ++v) {
-                degenerate[v] = is_degenerate(frustum, p.vertices[v].position, options.guard_m);
-            }
-        }
-        Range range{static_cast<GLsizei>(indices.size()), 0, &p};
-        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-            ++stats.triangles;
-            if (degenerate[p.indices[t]] || degenerate[p.indices[t + 1]] || degenerate[p.indices[t + 2]]) {
-                ++stats.culled;
-                continue;
-            }
-            indices.insert(indices.end(), {base + p.indices[t], base + p.indices[t + 1], base + p.indices[t + 2]});
-        }
-        range.count = static_cast<GLsizei>(indices.size()) - range.first;
+    for (const NonAffineBatch::Range& kept : batch.ranges) {
+        const WorldPrimitive& p = geometry.split.primitives[kept.primitive];
+        Range range{static_cast<GLsizei>(kept.first), static_cast<GLsizei>(kept.count), &p};
         range.group = alpha_group(ctx.scene.material(p.material).alpha_mode);
         if (range.group == AlphaGroup::Blend && !p.vertices.empty()) {
             glm::vec3 low = p.vertices.front().position, high = low;
@@ -114,10 +133,11 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
             // The near plane is outward (plane 4): its distance is negative inside.
             range.depth_m = -frustum.plane(4).distance(0.5f * (low + high));
         }
-        if (range.count > 0) {
-            ranges.push_back(range);
-        }
+        ranges.push_back(range);
     }
+    const std::vector<WorldVertex>& vertices = geometry.vertices;
+    const std::vector<std::uint32_t>& indices = batch.indices;
+    const NonAffineStats stats = batch.stats;
 
     const gl::Functions& fn = ctx.fn;
     auto vertex_array = gl::VertexArray::create(fn);
@@ -134,6 +154,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
     fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(WorldVertex)), vertices.data(),
                   GL_STREAM_DRAW);
     fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer->id());
+    static_assert(sizeof(GLuint) == sizeof(std::uint32_t));
     fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
                   GL_STREAM_DRAW);
     set_vertex_layout(fn);

@@ -17,12 +17,17 @@
 
 #include "plan/non_affine_frustum.hpp"
 #include "render/pass_context.hpp"
+#include "plan/split_geometry.hpp"
 #include "plan/world_geometry.hpp"
 
 #include <frustum/matrix_pair.hpp>
 #include <frustum/non_affine.hpp>
 #include <frustum/result.hpp>
 #include <gl/offscreen_target.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace render {
 
@@ -34,9 +39,33 @@ struct NonAffineStats {
 // True when some denominator of eq. 36 at `p` is >= -guard_m.
 bool is_degenerate(const frustum::NonAffineFrustum<float>& frustum, const glm::vec3& p, float guard_m);
 
+// The CPU part of one frame: the triangles of `geometry` that the cull keeps
+// (options.cull: every triangle with a degenerate vertex is dropped), as
+// indices into geometry.vertices, one range per primitive that keeps any.
+struct NonAffineBatch {
+    struct Range {
+        std::uint32_t first = 0; // into indices
+        std::uint32_t count = 0;
+        std::size_t primitive = 0; // into geometry.split.primitives
+    };
+    std::vector<std::uint32_t> indices;
+    std::vector<Range> ranges;
+    NonAffineStats stats;
+};
+NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                const NonAffineOptions& options);
+
 // Draws the whole frame into `frame` (left bound). The frustum's planes are
 // used; its depth range is not: s = 0..1 goes to the GPU's depth range
-// (ctx.depth). `geometry` holds the scene's original triangles.
+// (ctx.depth). `geometry` is the scene's triangles split to
+// options.max_edge_m (SplitGeometry::build(), SplitGeometryCache).
+frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                                      const SplitGeometry& geometry,
+                                                      const frustum::NonAffineFrustum<float>& frustum,
+                                                      const NonAffineOptions& options);
+
+// As above from the scene's original (placed, unsplit) triangles: splits
+// them first, each call.
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
                                                       const WorldGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,

@@ -24,8 +24,10 @@
 #include <plan/stereo.hpp>
 #include <plan/view_links.hpp>
 #include <plan/view_tree.hpp>
+#include <plan/split_geometry.hpp>
 #include <plan/world_geometry.hpp>
 #include <render/curved_pass.hpp>
+#include <render/non_affine_pass.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -144,40 +146,38 @@ Frame lens(int grid) {
 }
 
 // Renderer::draw()'s non-affine case and draw_non_affine_frame()'s CPU part:
-// the fit, the six planes, the scene placed and subdivided, every vertex
-// tested against the denominators and the index list built (no upload).
+// the fit, the six planes, the scene's split triangles from the renderer's
+// cache (placed and split once: the instances do not move between frames),
+// every vertex tested against the denominators and the index list built
+// (batch_non_affine(); no upload).
 void nonaffine(const FrameSetup& s, benchmark::State& state) {
+    static render::SplitGeometryCache cache(s.object_geometry);
     const auto c = cameras(s);
     const render::NonAffineOptions base; // RenderOptions::nonaffine's default
     const auto fitted = must(render::fit_non_affine(c.main.pair, s.scene.world_bounds, base, s.params.fit),
                              "fit_non_affine");
     const auto slits = must(render::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
                             "crossed_slits_frustum");
-    const render::WorldGeometry world = s.object_geometry.placed(s.scene.instances);
-    const render::WorldGeometry split = render::subdivide(world, fitted.max_edge_m);
-    std::vector<render::WorldVertex> vertices;
-    std::vector<unsigned> indices;
-    std::vector<bool> degenerate;
-    std::int64_t triangles = 0;
-    for (const render::WorldPrimitive& p : split.primitives) {
-        const auto first = static_cast<unsigned>(vertices.size());
-        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
-        degenerate.assign(p.vertices.size(), false);
-        for (std::size_t v = 0; v < p.vertices.size(); ++v) {
-            const glm::vec3 d = slits.denominators(p.vertices[v].position);
-            degenerate[v] = !(d.x < -fitted.guard_m && d.y < -fitted.guard_m && d.z < -fitted.guard_m);
-        }
-        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-            ++triangles;
-            if (degenerate[p.indices[t]] || degenerate[p.indices[t + 1]] || degenerate[p.indices[t + 2]]) {
-                continue;
-            }
-            indices.insert(indices.end(), {first + p.indices[t], first + p.indices[t + 1], first + p.indices[t + 2]});
-        }
-    }
-    benchmark::DoNotOptimize(indices.data());
-    benchmark::DoNotOptimize(vertices.data());
-    state.counters["triangles"] = static_cast<double>(triangles);
+    const render::SplitGeometry& split = cache.get(s.scene.instances, fitted.max_edge_m);
+    const render::NonAffineBatch batch = render::batch_non_affine(split, slits, fitted);
+    benchmark::DoNotOptimize(batch.indices.data());
+    state.counters["triangles"] = static_cast<double>(batch.stats.triangles);
+}
+
+// The same frame after an instance moved (or the first frame): the scene
+// placed, split and gathered again before the batch.
+void nonaffine_rebuilt(const FrameSetup& s, benchmark::State& state) {
+    const auto c = cameras(s);
+    const auto fitted = must(render::fit_non_affine(c.main.pair, s.scene.world_bounds, render::NonAffineOptions{},
+                                                    s.params.fit),
+                             "fit_non_affine");
+    const auto slits = must(render::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
+                            "crossed_slits_frustum");
+    const render::SplitGeometry split =
+        render::SplitGeometry::build(s.object_geometry.placed(s.scene.instances), fitted.max_edge_m);
+    const render::NonAffineBatch batch = render::batch_non_affine(split, slits, fitted);
+    benchmark::DoNotOptimize(batch.indices.data());
+    state.counters["triangles"] = static_cast<double>(batch.stats.triangles);
 }
 
 // The non-affine row without the geometry: cameras, fit and the six planes.
@@ -254,6 +254,7 @@ std::vector<Row> rows() {
         {"cpu/frame/lens/max_" + grid(lens_max, lens_max), lens(lens_max)},
         {"cpu/frame/nonaffine/default", nonaffine},
         {"cpu/frame/nonaffine/planes_only", nonaffine_planes}, // a breakdown of the row above
+        {"cpu/frame/nonaffine/rebuilt", nonaffine_rebuilt},    // an instance moved: the cache rebuilt
         {"cpu/frame/portal/default", links(true, 1)},
         {"cpu/frame/recursion/default_depth" + std::to_string(d.recursion_depth), links(false, d.recursion_depth)},
         {"cpu/frame/recursion/max_depth" + std::to_string(render::kMaxRecursionDepth),
