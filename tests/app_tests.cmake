@@ -33,5 +33,9 @@ if(NOT FRUSTUM_GLES3_HEADER)
 endif()
 target_compile_definitions(test_gl PRIVATE FRUSTUM_GLES3_HEADER="${FRUSTUM_GLES3_HEADER}")
 frustum_test_suite(cli frustum::frustum ${_app_libs})
+if(TARGET frustum-demo) # tests/cli/poster_cli_test.cpp runs it
+  target_compile_definitions(test_cli PRIVATE FRUSTUM_DEMO_EXE="$<TARGET_FILE:frustum-demo>")
+  add_dependencies(test_cli frustum-demo)
+endif()
 include(${CMAKE_CURRENT_SOURCE_DIR}/robustness/suite.cmake OPTIONAL) # frustum_test_suite(robustness ...) + tool paths
 include(${CMAKE_CURRENT_SOURCE_DIR}/window/suite.cmake OPTIONAL) # frustum_test_suite(window ...) + frustum-demo's path

@@ -1,12 +1,12 @@
 #include "demo/command_line.hpp"
 
 #include "demo/option_values.hpp"
+#include "demo/poster_file.hpp"
 
 #include <algorithm>
 #include <utility>
 
 namespace demo {
-
 unsigned long long output_image_bytes(int width_px, int height_px, std::size_t effects) {
     const unsigned long long w = static_cast<unsigned long long>(width_px);
     const unsigned long long h = static_cast<unsigned long long>(height_px);
@@ -32,8 +32,16 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
                      " needs at least one pixel per tile, but the image is " + std::to_string(request.width_px) +
                      "x" + std::to_string(request.height_px));
     }
+    // A poster (above one target, or --poster-tile) is streamed to its file:
+    // only its contact-sheet thumbnail is held.
+    const bool poster = request.poster_tile_px || request.width_px > kMaxDirectSidePx ||
+                        request.height_px > kMaxDirectSidePx;
+    const int held_factor = poster ? (std::max(request.width_px, request.height_px) + kPosterThumbnailSidePx - 1) /
+                                         kPosterThumbnailSidePx
+                                   : 1;
     const unsigned long long image_bytes =
-        output_image_bytes(request.width_px, request.height_px, request.effects.size());
+        output_image_bytes((request.width_px + held_factor - 1) / held_factor,
+                           (request.height_px + held_factor - 1) / held_factor, request.effects.size());
     if (image_bytes > request.budget.max_decoded_bytes) {
         return usage("--size " + std::to_string(request.width_px) + "x" + std::to_string(request.height_px) +
                      " with " + std::to_string(request.effects.size()) + " effect(s) holds " +

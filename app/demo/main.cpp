@@ -11,6 +11,7 @@
 #include <new>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 namespace {
 
@@ -69,8 +70,19 @@ int render_main(const std::vector<std::string>& args) {
         return 0;
     }
     const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
-    const demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
-    const auto outcome = demo::run_render(std::get<demo::RenderRequest>(parsed), reporter);
+    demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
+    const auto& request = std::get<demo::RenderRequest>(parsed);
+    // A long render's progress: in place on a terminal, one line each with --verbose, else quiet.
+    if (isatty(STDERR_FILENO)) {
+        reporter.status = [](std::string_view line) { std::cerr << "\r" << line << "\033[K" << std::flush; };
+    } else if (request.verbose) {
+        reporter.status = [](std::string_view line) {
+            if (!line.empty()) {
+                std::cerr << "frustum-demo: " << line << '\n';
+            }
+        };
+    }
+    const auto outcome = demo::run_render(request, reporter);
     if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
         std::cerr << "frustum-demo: error: " << failure->message << '\n';
         return static_cast<int>(failure->status);

@@ -2,6 +2,8 @@
 
 #include "demo/option_values.hpp"
 
+#include <render/poster.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -71,12 +73,25 @@ std::optional<std::vector<gl::KeyPressed>> parse_keys(std::string_view text) {
     return keys;
 }
 
+// --size of the window and the reports (one GPU target) and of render (a
+// poster above one target: render::kMaxPosterSidePx).
+template <int most>
 std::optional<Failure> apply_size(Settings& s, const std::string& value) {
-    const auto size = parse_pair(value, kMaxSidePx);
+    const auto size = parse_pair(value, most);
     if (!size) {
-        return usage("--size must be WxH with 1..8192 each, got " + quoted(value));
+        return usage("--size must be WxH with 1.." + std::to_string(most) + " each, got " + quoted(value));
     }
     std::tie(s.width_px, s.height_px) = *size;
+    return std::nullopt;
+}
+
+std::optional<Failure> apply_poster_tile(Settings& s, const std::string& value) {
+    const auto size = parse_pair(value, kMaxSidePx);
+    if (!size) {
+        return usage("--poster-tile must be WxH with 1.." + std::to_string(kMaxSidePx) + " each, got " +
+                     quoted(value));
+    }
+    s.poster_tile_px = *size;
     return std::nullopt;
 }
 
@@ -209,9 +224,18 @@ std::vector<Option> session_rows() {
          kRender, "tiles", false},
         {"--effect", "E", "first effect: " + effect_names() + " (default plain)", first_effect, kWindow, "tiles",
          false, choice(effect_choices())},
-        {"--size", "WxH", "image size in pixels, 1..8192 each (default 640x360)", apply_size, kRender | kReports,
+        {"--size", "WxH",
+         "image size in pixels, 1..65536 each (default 640x360); larger\n"
+         "than one GPU target holds, a poster: drawn in tiles, streamed to PNG",
+         apply_size<render::kMaxPosterSidePx>, kRender, "64x48", false},
+        {"--size", "WxH", "image size in pixels, 1..8192 each (default 640x360)", apply_size<kMaxSidePx>, kReports,
          "64x48", false},
-        {"--size", "WxH", "window size, 1..8192 each (default 960x540)", apply_size, kWindow, "64x48", false},
+        {"--size", "WxH", "window size, 1..8192 each (default 960x540)", apply_size<kMaxSidePx>, kWindow, "64x48",
+         false},
+        {"--poster-tile", "WxH",
+         "render as a poster in tiles of WxH px, 1..8192 each (default: a\n"
+         "poster only above one target, in tiles of at most 4096x4096)",
+         apply_poster_tile, kRender, "32x16", false},
         {"--backend", "B", "egl | osmesa (default: egl, falling back to osmesa with a note)", backend, kOffscreen,
          "egl", false},
         {"--depth", "D",

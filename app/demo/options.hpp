@@ -46,6 +46,8 @@ struct Settings : render::EffectParams {
     // render and window.
     std::vector<render::Effect> effects; // --effect (window: one, the first shown)
     int msaa_samples = gl::kAutomaticSamples; // --msaa N; default 4 or the context's maximum
+    // render.
+    std::optional<std::pair<int, int>> poster_tile_px; // --poster-tile WxH: a poster in tiles of this size
     // window.
     gl::Api context_api = gl::Api::Gles;   // --context es|gl: the window's OpenGL ES or desktop core context
     bool inset = false;                    // --inset: start with the frustum view inset shown

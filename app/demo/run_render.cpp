@@ -1,6 +1,7 @@
 #include "demo/run_render.hpp"
 
 #include "demo/output_dir.hpp"
+#include "demo/poster_file.hpp"
 #include "demo/sheet_labels.hpp"
 
 #include <gl/context.hpp>
@@ -11,13 +12,18 @@
 #include <plan/curved_mirror.hpp>
 #include <plan/mirror_placement.hpp>
 #include <plan/number_text.hpp>
+#include <render/poster.hpp>
 #include <render/renderer.hpp>
 #include <plan/scene_fit.hpp>
 #include <plan/view_tree.hpp>
 #include <render/stereo_render.hpp>
 #include <scene/load_gltf.hpp>
 
+#include <image/png_stream.hpp>
+
+#include <cstdio>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace demo {
@@ -28,6 +34,45 @@ std::string depth_summary(const render::Renderer& renderer, render::DepthPath pa
 }
 
 namespace {
+
+std::string size_text(int width_px, int height_px) { return std::to_string(width_px) + "x" + std::to_string(height_px); }
+
+// "41.2 s, 0.41 Mpx/s (render and read-back 35.0 s, PNG 6.2 s)"
+std::string timing_text(const PosterTiming& timing, const render::PosterLayout& layout) {
+    const double mpx = double(layout.width_px) * layout.height_px / 1e6;
+    char text[160];
+    std::snprintf(text, sizeof text, "%.2f s, %.2f Mpx/s (render and read-back %.2f s, PNG %.2f s)", timing.total_s,
+                  timing.total_s > 0.0 ? mpx / timing.total_s : 0.0, timing.render_and_read_back_s,
+                  timing.compression_s);
+    return text;
+}
+
+// The frame as a poster (render::render_poster(), streamed to the PNG) with
+// --poster-tile or when one target of the context cannot hold it; nullopt:
+// a direct render, as always. Stereo draws into one target only.
+std::variant<std::optional<render::PosterLayout>, Failure> choose_poster(const gl::Functions& fn,
+                                                                          const RenderRequest& request,
+                                                                          bool stereo) {
+    const int w = request.width_px;
+    const int h = request.height_px;
+    const bool direct_size = w <= kMaxDirectSidePx && h <= kMaxDirectSidePx;
+    const auto whole = render::poster_layout(fn, w, h, std::pair<int, int>(w, h));
+    if (direct_size && whole && !request.poster_tile_px) {
+        return std::optional<render::PosterLayout>();
+    }
+    if (stereo) {
+        return usage("--stereo draws both eyes into one target: --size " + size_text(w, h) +
+                     (request.poster_tile_px ? std::string(" with --poster-tile") : std::string()) +
+                     " would be a poster, which has no stereo; stereo sizes go up to " +
+                     size_text(kMaxDirectSidePx, kMaxDirectSidePx) +
+                     (whole ? std::string() : " (" + whole.error() + ")"));
+    }
+    auto layout = render::poster_layout(fn, w, h, request.poster_tile_px);
+    if (!layout) {
+        return usage("--poster-tile: " + layout.error());
+    }
+    return std::optional<render::PosterLayout>(*layout);
+}
 
 std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
     if (request.stereo && request.width_px % 2 != 0) {
@@ -94,6 +139,15 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         }
         return {};
     };
+    auto poster = choose_poster(*fn, request, stereo.has_value());
+    if (auto* failure = std::get_if<Failure>(&poster)) {
+        return *failure;
+    }
+    const std::optional<render::PosterLayout> layout = std::get<0>(poster);
+    if (layout && request.verbose) {
+        reporter.note("poster: " + size_text(layout->width_px, layout->height_px) + " in tiles of " +
+                      size_text(layout->tile_width_px, layout->tile_height_px) + ", streamed to PNG");
+    }
     for (render::Effect effect : request.effects) {
         const std::string name(render::to_string(effect));
         if (request.verbose && effect == render::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
@@ -104,22 +158,50 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
                 reporter.note(**end);
             }
         }
-        auto picture = stereo ? render::render_stereo(*renderer, effect, *cameras, options, *stereo)
-                              : renderer->render(effect, *cameras, options);
+        std::optional<image::Image> picture; // a direct render; a poster leaves only its thumbnail
+        std::string error;
+        if (layout) {
+            PosterJob job{effect, *layout, request.out_dir + "/" + name + ".png", image::kStreamZlibLevel,
+                          reporter.status};
+            auto file = write_poster(*renderer, *cameras, options, job);
+            if (file) {
+                if (request.verbose) {
+                    reporter.note("poster: " + name + ".png: " + timing_text(file->timing, *layout));
+                }
+                run.written_paths.push_back(job.path);
+                if (several) {
+                    reporter.progress("[" + std::to_string(run.written_paths.size()) + "/" + std::to_string(total) +
+                                      "] " + name + ".png");
+                }
+                picture = std::move(file->thumbnail);
+            } else {
+                error = file.error();
+            }
+        } else {
+            auto drawn = stereo ? render::render_stereo(*renderer, effect, *cameras, options, *stereo)
+                                : renderer->render(effect, *cameras, options);
+            if (drawn) {
+                if (auto status = write(*drawn, name + ".png"); !status) {
+                    return runtime(status.error());
+                }
+                picture = std::move(*drawn);
+            } else {
+                error = drawn.error();
+            }
+        }
         if (!picture) {
-            const std::string failure = name + ": " + picture.error();
-            if (!several) {
+            const std::string failure = name + ": " + error;
+            if (!several || (layout && error.rfind("image::PngStream", 0) == 0)) {
                 return runtime(failure);
             }
             run.failed_effects.push_back(failure);
-            reporter.progress("[-/" + std::to_string(total) + "] " + name + " failed: " + picture.error());
+            reporter.progress("[-/" + std::to_string(total) + "] " + name + " failed: " + error);
             continue;
         }
-        if (auto status = write(*picture, name + ".png"); !status) {
-            return runtime(status.error());
+        if (several) {
+            images.emplace_back(name, with_caption(*picture, effect_caption(effect, options, cameras->main.name,
+                                                                            cameras->main.pair, *scene)));
         }
-        images.emplace_back(name, with_caption(*picture, effect_caption(effect, options, cameras->main.name,
-                                                                        cameras->main.pair, *scene)));
     }
     g_activity = "writing the contact sheet";
     if (several) {

@@ -27,6 +27,9 @@ namespace demo {
 struct Reporter {
     std::function<void(std::string_view)> progress; // "[2/4] mirror.png", multi-image runs only
     std::function<void(std::string_view)> note;     // backend fallback, --verbose context and KHR_debug lines
+    // A long render's progress line ("mirror: 12/64 tiles, 3.4 Mpx/s, 41 s left"), at most once a
+    // second, replaced in place; "" when done. Empty: not shown.
+    std::function<void(std::string_view)> status = {};
 };
 
 using ContextMaker = std::function<frustum::Result<std::unique_ptr<gl::Context>>()>;

@@ -1,3 +1,2 @@
 // test_cli: frustum-vectors (and later command-line tools), label "cli".
-#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
-#include <doctest/doctest.h>
+#include "../skips_main.hpp" // doctest's main; a skip (no GL for the poster tests) exits 77

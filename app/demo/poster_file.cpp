@@ -1,0 +1,78 @@
+#include "demo/poster_file.hpp"
+
+#include <image/png_stream.hpp>
+#include <image/thumbnail.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace demo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// "12/64 tiles, 3.4 Mpx/s, 41 s left"
+std::string progress_text(int done, int total, double mpx_done, double elapsed_s) {
+    const double rate = elapsed_s > 0.0 ? mpx_done / elapsed_s : 0.0;
+    const double left_s = done > 0 ? elapsed_s * (total - done) / done : 0.0;
+    char text[128];
+    std::snprintf(text, sizeof text, "%d/%d tiles, %.1f Mpx/s, %.0f s left", done, total, rate, std::ceil(left_s));
+    return text;
+}
+
+} // namespace
+
+frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const render::Cameras& cameras,
+                                         const render::RenderOptions& options, const PosterJob& job) {
+    const render::PosterLayout& layout = job.layout;
+    auto stream = image::PngStream::open(job.path, layout.width_px, layout.height_px, job.zlib_level);
+    if (!stream) {
+        return stream.take_error();
+    }
+    image::Thumbnail thumbnail(layout.width_px, layout.height_px, kPosterThumbnailSidePx);
+    PosterTiming timing;
+    const Clock::time_point start = Clock::now();
+    Clock::time_point last_sink_end = start;
+    Clock::time_point last_status = start;
+    const double tile_mpx = double(layout.tile_width_px) * layout.tile_height_px / 1e6;
+    const double frame_mpx = double(layout.width_px) * layout.height_px / 1e6;
+
+    const render::PosterRowSink sink = [&](const image::Image& rows, int) -> frustum::Status {
+        const Clock::time_point begin = Clock::now();
+        timing.render_and_read_back_s += std::chrono::duration<double>(begin - last_sink_end).count();
+        if (auto written = (*stream)->write_rows(rows); !written) {
+            return written;
+        }
+        thumbnail.add_rows(rows);
+        last_sink_end = Clock::now();
+        timing.compression_s += std::chrono::duration<double>(last_sink_end - begin).count();
+        return {};
+    };
+    const render::PosterProgress progress = [&](int done, int total) {
+        if (!job.status || seconds_since(last_status) < 1.0) {
+            return;
+        }
+        last_status = Clock::now();
+        const double mpx_done = std::min(frame_mpx, done * tile_mpx);
+        job.status(std::string(render::to_string(job.effect)) + ": " +
+                   progress_text(done, total, mpx_done, seconds_since(start)));
+    };
+    if (auto drawn = render::render_poster(renderer, job.effect, cameras, options, layout, sink, progress); !drawn) {
+        return drawn.take_error();
+    }
+    if (auto finished = (*stream)->finish(); !finished) {
+        return finished.take_error();
+    }
+    timing.total_s = seconds_since(start);
+    if (job.status && last_status != start) {
+        job.status("");
+    }
+    return PosterFile{thumbnail.image(), timing};
+}
+
+} // namespace demo

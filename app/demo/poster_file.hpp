@@ -1,0 +1,54 @@
+// One effect as a poster file (issue 36): render::render_poster()'s rows of
+// tiles streamed into an image::PngStream as they finish, a thumbnail for
+// the contact sheet box-filtered from the same rows, and a progress line
+// for long renders. Holds one row of tiles and the thumbnail, never the
+// whole image. Prints nothing.
+#pragma once
+
+#include <frustum/result.hpp>
+#include <image/image.hpp>
+#include <render/poster.hpp>
+#include <render/renderer.hpp>
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace demo {
+
+// The largest direct render per side (render::Renderer::render(), one
+// target): larger frames, or any with --poster-tile, are posters.
+inline constexpr int kMaxDirectSidePx = 8192;
+
+// The contact sheet's cell of a poster: its longer side at most this.
+inline constexpr int kPosterThumbnailSidePx = 1024;
+
+// Where the time of a poster went, in seconds: drawing and reading back the
+// tiles (render_poster() between its sink calls), and the rows' PNG
+// compression with the thumbnail (the sink).
+struct PosterTiming {
+    double render_and_read_back_s = 0.0;
+    double compression_s = 0.0;
+    double total_s = 0.0;
+};
+
+struct PosterFile {
+    image::Image thumbnail; // at most kPosterThumbnailSidePx per side
+    PosterTiming timing;
+};
+
+struct PosterJob {
+    render::Effect effect = render::Effect::Plain;
+    render::PosterLayout layout;
+    std::string path;
+    int zlib_level = 3; // image::kStreamZlibLevel
+    // "mirror: tile 12/64, 3.4 Mpx/s, 41 s left": after the first second, at
+    // most once a second; "" when the poster is done. Empty: no progress.
+    std::function<void(std::string_view)> status;
+};
+
+// The file appears only when complete (image::PngStream).
+frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const render::Cameras& cameras,
+                                         const render::RenderOptions& options, const PosterJob& job);
+
+} // namespace demo
