@@ -157,7 +157,11 @@ std::variant<OpenedScene, std::string> open_scene(const WindowSession& s, const 
         return failure->message;
     }
     LoadedScene& scene = std::get<LoadedScene>(loaded);
-    std::optional<std::string> placed = render::place_mirror(scene.scene, settings.mirror_place);
+    // Placed where the new scene's camera sees it, as at start-up (docs/any-scene.md).
+    auto cameras = render::make_cameras(scene.scene, scene.camera_index, std::max(1, settings.width_px),
+                                        std::max(1, settings.height_px));
+    std::optional<std::string> placed =
+        render::place_mirror(scene.scene, settings.mirror_place, cameras ? &cameras->main.pair : nullptr);
     auto renderer = render::Renderer::create(*s.context, *s.fn, scene.scene);
     if (!renderer) {
         return renderer.error();
