@@ -308,8 +308,12 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             state.mirror = {};
         }
     }
+    // Above 1x, a poster of the current view (render::render_poster(), streamed to PNG).
+    const char* scales[] = {"1x", "2x", "4x", "8x"};
+    ImGui::Combo("screenshot size", &screenshot_scale_index_, scales, 4);
     if (ImGui::Button("screenshot")) {
         outcome.screenshot = true;
+        outcome.screenshot_scale = 1 << screenshot_scale_index_;
     }
     ImGui::TextWrapped("%s", line_.text().c_str());
     ImGui::PopItemWidth();

@@ -49,6 +49,7 @@ struct PanelView {
 struct PanelOutcome {
     std::optional<Settings> settings; // a control changed and the command line parses
     bool screenshot = false;          // the screenshot button
+    int screenshot_scale = 1;         // its size: 1, 2, 4 or 8 x the window's (above 1, a poster)
 };
 
 class WindowPanel {
@@ -73,6 +74,7 @@ private:
     PanelCommandLine accepted_; // the last command line the window took
     Settings current_;
     std::optional<std::string> error_;
+    int screenshot_scale_index_ = 0; // the screenshot size: 1 << index times the window's
     std::array<char, 1024> scene_field_{}; // the scene file's text field
     bool followed_ = false;
 };

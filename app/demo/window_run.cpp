@@ -1,5 +1,6 @@
 #include "demo/window_run.hpp"
 
+#include "demo/poster_file.hpp"
 #include "demo/run_render.hpp"
 #include "demo/window_panel.hpp"
 
@@ -7,8 +8,10 @@
 #include <gl/glfw_egl_window.hpp>
 #include <gl/window_framebuffer.hpp>
 #include <image/png.hpp>
+#include <image/png_stream.hpp>
 #include <gl/offscreen_target.hpp>
 #include <plan/camera.hpp>
+#include <render/poster.hpp>
 #include <render/renderer.hpp>
 #include <window/controls.hpp>
 #include <window/frame.hpp>
@@ -131,6 +134,35 @@ frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSi
         return pixels.take_error();
     }
     return image::write_png(*pixels, path);
+}
+
+// The panel's screenshot at `scale` x the window (> 1): the frame's view,
+// effect and values drawn again as a poster, streamed to
+// "frustum-window-<scale>x.png" (without the inset, the panel and the help).
+// Stereo frames are one eye's: refused, as render refuses stereo posters.
+frustum::Result<std::string> save_poster(const render::Renderer& renderer, const window::Frame& frame,
+                                         const gl::FramebufferSize& size, int scale) {
+    if (frame.stereo) {
+        return frustum::Error{"screenshot " + std::to_string(scale) + "x: a poster has no stereo (use 1x)"};
+    }
+    const int width_px = std::min(size.width_px * scale, render::kMaxPosterSidePx);
+    const int height_px = std::min(size.height_px * scale, render::kMaxPosterSidePx);
+    auto layout = render::poster_layout(renderer.functions(), width_px, height_px);
+    if (!layout) {
+        return layout.take_error();
+    }
+    render::RenderOptions options = frame.options;
+    options.pass_end = nullptr; // the window's GPU timer marks only its own frames
+    PosterJob job;
+    job.effect = frame.effect;
+    job.layout = *layout;
+    job.path = "frustum-window-" + std::to_string(scale) + "x.png";
+    job.zlib_level = image::kStreamZlibLevel;
+    auto written = write_poster(renderer, frame.cameras, options, job);
+    if (!written) {
+        return written.take_error();
+    }
+    return job.path;
 }
 
 // The settings with the mirror left where the scene has it now (placed at
@@ -288,6 +320,7 @@ private:
     std::optional<std::string> notice_; // why an effect was refused, in the overlay
     std::size_t keys_pressed_ = 0;      // of request.keys, one per pass of the loop
     bool screenshot_asked_ = false;     // the panel's button, saved at the next frame
+    int screenshot_scale_ = 1;          // its size x the window's; above 1 a poster (save_poster())
     std::chrono::steady_clock::time_point last_frame_;
 };
 
@@ -459,6 +492,9 @@ std::optional<Failure> WindowLoop::take_panel_outcome(PanelOutcome outcome) {
         notice_.reset();
     }
     screenshot_asked_ = screenshot_asked_ || outcome.screenshot;
+    if (outcome.screenshot) {
+        screenshot_scale_ = outcome.screenshot_scale;
+    }
     return std::nullopt;
 }
 
@@ -534,6 +570,15 @@ std::optional<Failure> WindowLoop::step(bool& done) {
     }
     if (auto failure = draw_overlay(*frame, help, paint_ms)) {
         return failure;
+    }
+    if (screenshot_asked_ && screenshot_scale_ > 1 && !request_.frames) {
+        // A poster of this frame's view; a failure is a note, the window goes on.
+        auto saved = save_poster(*s_.renderer, *frame, size_, screenshot_scale_);
+        note_(saved ? "screenshot: " + *saved : "screenshot: " + saved.error());
+        if (saved) {
+            run_.written_paths.push_back(*saved);
+        }
+        screenshot_asked_ = false;
     }
     return finish_frame(done);
 }
