@@ -5,7 +5,7 @@ ASAN_BUILD ?= build-asan-clang
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan test-clang test-arm test-aarch64 test-wasm bench fuzz web clean
+.PHONY: all deps build demo test test-asan test-clang test-arm test-aarch64 test-wasm bench bench-poster fuzz web clean
 
 all: build
 
@@ -70,6 +70,19 @@ bench: deps
 	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFRUSTUM_BUILD_BENCH=ON $(CMAKE_FLAGS)
 	cmake --build build-bench -j $(JOBS)
 	bash scripts/bench.sh build-bench
+
+# Posters (issue 36, docs/performance.md "Posters"): the zlib level table on a
+# 4096 x 4096 showcase render, then peak RSS and time per megapixel of every
+# effect at 4096^2 and 16384^2 and of plain and mirror at 32768^2 (about an
+# hour on llvmpipe with 2 cores; POSTER_SIZES / POSTER_EFFECTS to choose).
+POSTER_EFFECTS ?= plain mirror tiles frustum curved lens nonaffine portal recursion
+bench-poster: deps
+	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFRUSTUM_BUILD_BENCH=ON $(CMAKE_FLAGS)
+	cmake --build build-bench -j $(JOBS) --target frustum-demo poster_zlib
+	build-bench/app/demo/frustum-demo render --size 4096x4096 --effect mirror --out build-bench/poster-zlib
+	build-bench/tests/bench/poster_zlib build-bench/poster-zlib/mirror.png 1 3 6
+	bash scripts/poster-bench.sh build-bench/app/demo/frustum-demo "$${POSTER_SIZES:-4096 16384}" "$(POSTER_EFFECTS)" build-bench/poster-runs
+	bash scripts/poster-bench.sh build-bench/app/demo/frustum-demo 32768 "plain mirror" build-bench/poster-runs
 
 # The renderer as one WebGL 2 page (build-web/app/web/frustum-web.html, emscripten)
 # and its browser test (CTest label web; slow, so not part of `make test`).
