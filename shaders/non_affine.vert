@@ -13,7 +13,7 @@ layout(location = 3) in vec2 a_texcoord;
 uniform vec4 u_planes[6]; // unit, OUTWARD: left, right, bottom, top, near, far
 uniform float u_z_near;   // clip z of the near (s = 0) and far (s = 1) planes
 uniform float u_z_far;
-uniform vec4 u_crop;      // ndc.xy * u_crop.xy + u_crop.zw: a poster tile's crop (paper eq. 14), (1, 1, 0, 0) for the frame
+uniform vec4 u_crop;      // ndc.xy * u_crop.xy + u_crop.zw: a poster tile's crop (eq. 14); (1, 1, 0, 0): the frame
 
 out vec3 v_world;
 out vec3 v_normal;

@@ -32,6 +32,12 @@ if(NOT FRUSTUM_GLES3_HEADER)
   message(FATAL_ERROR "GLES3/gl3.h not found (libgles-dev, scripts/install-deps.sh)")
 endif()
 target_compile_definitions(test_gl PRIVATE FRUSTUM_GLES3_HEADER="${FRUSTUM_GLES3_HEADER}")
+# Issue 36's poster checks at full size (4096^2 in 512^2 tiles, 16384^2
+# downsampled 4x, every effect): minutes on llvmpipe, so not in `make test`;
+# built and run on demand: cmake --build build --target test_poster_slow && build/tests/test_poster_slow
+add_executable(test_poster_slow EXCLUDE_FROM_ALL gl/poster_slow/main.cpp gl/poster_slow/poster_seams_slow_test.cpp)
+target_link_libraries(test_poster_slow PRIVATE doctest::doctest frustum_test_support frustum::frustum ${_app_libs})
+target_compile_definitions(test_poster_slow PRIVATE FRUSTUM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 frustum_test_suite(cli frustum::frustum ${_app_libs})
 if(TARGET frustum-demo) # tests/cli/poster_cli_test.cpp runs it
   target_compile_definitions(test_cli PRIVATE FRUSTUM_DEMO_EXE="$<TARGET_FILE:frustum-demo>")

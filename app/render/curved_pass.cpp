@@ -212,10 +212,17 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     }
     const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
                                               window.full_height_px);
-    auto atlas = render_atlas(ctx, **plan, tile, draw.mirror.instance);
-    if (!atlas) {
-        return atlas.take_error();
+    // One atlas per frame: the tiles of a poster share it (frame_cache.hpp).
+    std::optional<gl::OffscreenTarget> own_atlas;
+    std::optional<gl::OffscreenTarget>& atlas_slot = ctx.frame_cache ? ctx.frame_cache->curved_atlas : own_atlas;
+    if (!atlas_slot) {
+        auto made = render_atlas(ctx, **plan, tile, draw.mirror.instance);
+        if (!made) {
+            return made.take_error();
+        }
+        atlas_slot = std::move(*made);
     }
+    const gl::OffscreenTarget* atlas = &*atlas_slot;
     auto mesh = upload_cap(ctx.fn, *mirror, draw.options.patches);
     if (!mesh) {
         return mesh.take_error();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "render/depth_policy.hpp"
+#include "render/frame_cache.hpp"
 #include "render/frame_window.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/programs.hpp"
@@ -44,6 +45,9 @@ struct PassContext {
     // the passes plan for window->full_* and draw the crop to window->rect.
     // Unset: the target is the whole frame.
     std::optional<FrameWindow> window = {};
+    // The tiles of one poster share what each would draw the same (the
+    // curved mirror's atlas); null: nothing kept.
+    FrameCache* frame_cache = nullptr;
 };
 
 // ctx.window, else the whole frame of a target_width_px x target_height_px target.

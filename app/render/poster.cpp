@@ -123,6 +123,7 @@ frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cam
     // At most four tile sizes (the last column and row are cut): a target is
     // made again only when the size changes.
     std::optional<gl::OffscreenTarget> target;
+    FrameCache cache; // what every tile draws the same (the curved mirror's atlas)
     int done = 0;
     for (int row = 0; row < rows; ++row) {
         const int top_px = row * layout.tile_height_px; // from the frame's top
@@ -145,7 +146,7 @@ frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cam
             // GL counts rows from the bottom.
             const FrameWindow window{layout.width_px, layout.height_px,
                                      PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
-            if (auto status = renderer.render_into(effect, cameras, options, *target, window); !status) {
+            if (auto status = renderer.render_into(effect, cameras, options, *target, window, &cache); !status) {
                 return status;
             }
             auto tile = target->read_rgba8();

@@ -99,7 +99,9 @@ frustum::Result<NonAffineProgram> NonAffineProgram::build(const gl::Functions& f
         const Source source{alpha_mask ? "masked non-affine" : "non-affine",
                             detail::insert_after_version(shaders::non_affine_vert, shaders::frustum_glsl),
                             with_defines(shaders::scene_frag, false, alpha_mask)};
-        return p.link_lit(fn, source, {{"u_planes", &p.planes_}, {"u_z_near", &p.z_near_}, {"u_z_far", &p.z_far_}, {"u_crop", &p.crop_}},
+        return p.link_lit(fn, source,
+                          {{"u_planes", &p.planes_}, {"u_z_near", &p.z_near_}, {"u_z_far", &p.z_far_},
+                           {"u_crop", &p.crop_}},
                           alpha_mask);
     });
 }

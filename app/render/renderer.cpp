@@ -136,7 +136,8 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
 }
 
 frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
-                                      const gl::OffscreenTarget& frame, const FrameWindow& window) const {
+                                      const gl::OffscreenTarget& frame, const FrameWindow& window,
+                                      FrameCache* cache) const {
     if (window.rect.width != frame.width() || window.rect.height != frame.height() || window.rect.x < 0 ||
         window.rect.y < 0 || window.rect.x + window.rect.width > window.full_width_px ||
         window.rect.y + window.rect.height > window.full_height_px) {
@@ -156,6 +157,7 @@ frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, con
     ctx.samples = frame.samples();
     ctx.pass_end = options.pass_end;
     ctx.window = window;
+    ctx.frame_cache = cache;
     if (auto status = draw(effect, ctx, frame, cameras, options); !status) {
         return status;
     }

@@ -88,8 +88,11 @@ public:
     // gets its crop (§5.1), the same pixels a direct render of the whole
     // frame has there. Errors: a window outside the frame or not the
     // target's size.
+    // `cache`, when given, keeps what every tile of the frame draws the same
+    // (frame_cache.hpp): pass one cache for all the tiles of one frame.
     frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
-                                const gl::OffscreenTarget& frame, const FrameWindow& window) const;
+                                const gl::OffscreenTarget& frame, const FrameWindow& window,
+                                FrameCache* cache = nullptr) const;
 
     // Moves the mirror for every later frame by `motion`, a rigid world
     // transform (rotation + translation) relative to where the scene put it;

@@ -1,0 +1,198 @@
+// Issue 36's seam checks at full size: a 4096 x 4096 poster in 512 x 512
+// crop tiles equals the direct 4096 x 4096 render, and a 16384 x 16384
+// poster downsampled 4x matches it, every effect; and how far the float
+// crop of a 65536-pixel frame moves a point (why kMaxPosterSidePx is 2^16).
+#include "../render_test_support.hpp"
+
+#include <frustum/crop.hpp>
+#include <render/poster.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The whole poster in memory (fine at 4096^2 here; frustum-demo streams it).
+image::Image poster_image(const render_test::RenderEnvironment& r, render::Effect effect,
+                          const render::Cameras& cameras, const render::RenderOptions& o,
+                          const render::PosterLayout& layout) {
+    image::Image out{layout.width_px, layout.height_px,
+                     std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) * layout.height_px * 4)};
+    const auto status = render::render_poster(
+        *r.renderer, effect, cameras, o, layout, [&](const image::Image& rows, int top_px) -> frustum::Status {
+            std::copy(rows.rgba.begin(), rows.rgba.end(),
+                      out.rgba.begin() + static_cast<std::ptrdiff_t>(top_px) * layout.width_px * 4);
+            return {};
+        });
+    REQUIRE_MESSAGE(status.ok(), status.error());
+    return out;
+}
+
+// A poster `factor` times larger per side, box-filtered down as its rows
+// arrive (sums in linear 8-bit values, as a resize of the PNG would), so
+// only the small image and one row of tiles are in memory.
+image::Image downsampled_poster(const render_test::RenderEnvironment& r, render::Effect effect,
+                                const render::Cameras& cameras, const render::RenderOptions& o, int width_px,
+                                int height_px, int factor) {
+    auto layout = render::poster_layout(r.env->fn, width_px * factor, height_px * factor);
+    REQUIRE_MESSAGE(layout.ok(), layout.error());
+    REQUIRE(layout->tile_height_px % factor == 0);
+    std::vector<std::uint32_t> sums(static_cast<std::size_t>(width_px) * height_px * 4, 0);
+    const auto status = render::render_poster(
+        *r.renderer, effect, cameras, o, *layout, [&](const image::Image& rows, int top_px) -> frustum::Status {
+            for (int y = 0; y < rows.height; ++y) {
+                const std::size_t out_row = static_cast<std::size_t>((top_px + y) / factor) * width_px;
+                const std::uint8_t* in = rows.rgba.data() + static_cast<std::size_t>(y) * rows.width * 4;
+                for (int x = 0; x < rows.width; ++x) {
+                    std::uint32_t* sum = sums.data() + (out_row + static_cast<std::size_t>(x / factor)) * 4;
+                    for (int c = 0; c < 4; ++c) {
+                        sum[c] += in[x * 4 + c];
+                    }
+                }
+            }
+            return {};
+        });
+    REQUIRE_MESSAGE(status.ok(), status.error());
+    image::Image out{width_px, height_px, std::vector<std::uint8_t>(sums.size())};
+    const std::uint32_t n = static_cast<std::uint32_t>(factor * factor);
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        out.rgba[i] = static_cast<std::uint8_t>((sums[i] + n / 2) / n);
+    }
+    return out;
+}
+
+constexpr int kSidePx = 4096;
+
+// Every effect, or those FRUSTUM_POSTER_EFFECTS names (comma-separated, e.g.
+// "curved,recursion"), to rerun one.
+std::vector<render::Effect> effects() {
+    const char* names = std::getenv("FRUSTUM_POSTER_EFFECTS");
+    std::vector<render::Effect> out;
+    for (render::Effect effect : render::kAllEffects) {
+        const std::string list = names ? "," + std::string(names) + "," : "";
+        if (!names || list.find("," + std::string(render::to_string(effect)) + ",") != std::string::npos) {
+            out.push_back(effect);
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_SUITE("poster-slow") {
+
+TEST_CASE("a 4096x4096 poster in 512x512 tiles equals the direct 4096x4096 render, every effect") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    const auto cameras = render_test::showcase_cameras(kSidePx, kSidePx);
+    for (render::Effect effect : effects()) {
+        const std::string name(render::to_string(effect));
+        INFO(name);
+        auto o = render_test::options(kSidePx, kSidePx);
+        o.msaa_samples = gl::kAutomaticSamples; // what frustum-demo renders with
+        auto start = Clock::now();
+        const image::Image direct = r->render(effect, cameras, o);
+        const double direct_s = seconds_since(start);
+        start = Clock::now();
+        const image::Image poster = poster_image(*r, effect, cameras, o, {kSidePx, kSidePx, 512, 512});
+        const double poster_s = seconds_since(start);
+        // 2 LSB per channel; edge pixels as in render_poster_test.cpp: at
+        // most 0.01% of the frame (1678 pixels) may differ more.
+        const int edge_pixels = kSidePx * kSidePx / 10000;
+        const auto diff = image::compare(direct, poster, 2);
+        REQUIRE_MESSAGE(diff.ok(), diff.error());
+        MESSAGE(name << ": 4096^2 in 512^2 tiles vs direct: max " << diff->max_abs << ", " << diff->pixels_over
+                     << " pixels over 2 LSB; direct " << direct_s << " s, poster " << poster_s << " s ("
+                     << kSidePx * double(kSidePx) / 1e6 / poster_s << " Mpx/s)");
+        CHECK(diff->pixels_over <= edge_pixels);
+        if (diff->pixels_over > edge_pixels) {
+            render_test::save_failure("poster-slow-" + name, direct, poster);
+        }
+    }
+}
+
+TEST_CASE("a 16384x16384 poster downsampled 4x matches the direct 4096x4096 render, every effect") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    constexpr int kFactor = 4;
+    for (render::Effect effect : effects()) {
+        const std::string name(render::to_string(effect));
+        INFO(name);
+        auto o = render_test::options(kSidePx, kSidePx);
+        o.msaa_samples = gl::kAutomaticSamples;
+        const image::Image direct = r->render(effect, render_test::showcase_cameras(kSidePx, kSidePx), o);
+        const auto start = Clock::now();
+        const image::Image small = downsampled_poster(
+            *r, effect, render_test::showcase_cameras(kSidePx * kFactor, kSidePx * kFactor), o, kSidePx, kSidePx,
+            kFactor);
+        const double poster_s = seconds_since(start);
+        // Not equal: 64 samples per pixel against MSAA's 4, and 1-pixel
+        // lines (the frustum view's, the tile borders) are 1/4 as wide. The
+        // means and the share of pixels more than 24 LSB off stay small.
+        const auto diff = image::compare(direct, small, 24);
+        REQUIRE_MESSAGE(diff.ok(), diff.error());
+        MESSAGE(name << ": 16384^2 downsampled 4x vs direct 4096^2: mean " << diff->mean_abs << " LSB, "
+                     << 100.0 * diff->fraction_over() << "% pixels over 24 LSB; poster " << poster_s << " s ("
+                     << 16384.0 * 16384.0 / 1e6 / poster_s << " Mpx/s)");
+        CHECK(diff->mean_abs <= 1.0);
+        CHECK(diff->fraction_over() <= 0.01);
+        if (diff->mean_abs > 1.0 || diff->fraction_over() > 0.01) {
+            render_test::save_failure("poster-slow-16384-" + name, direct, small);
+        }
+    }
+}
+
+TEST_CASE("the float crop of a 65536-pixel frame: where a point lands in its tile") {
+    // No GL: the showcase camera for a 65536^2 frame; points spread over the
+    // view; each mapped to pixels by the whole frame's pair in double and by
+    // its 4096^2 tile's float crop (eq. 14-15) plus the tile's offset.
+    constexpr int kFramePx = render::kMaxPosterSidePx, kTilePx = 4096;
+    const auto cameras = render_test::showcase_cameras(kFramePx, kFramePx);
+    const frustum::MatrixPair<float>& pair = cameras.main.pair;
+    const glm::dmat4 m(pair.matrix()), inv(pair.inverse());
+    std::mt19937 random(36);
+    std::uniform_real_distribution<double> unit(-0.999, 0.999), depth(0.0, 0.99);
+    double worst_px = 0.0, worst_full_px = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+        // A point inside the view: NDC -> world with the double inverse.
+        const glm::dvec4 ndc(unit(random), unit(random), depth(random), 1.0);
+        const glm::dvec4 world_h = inv * ndc;
+        const glm::vec4 world(glm::dvec3(world_h) / world_h.w, 1.0f);
+        const glm::dvec4 clip = m * glm::dvec4(world);
+        const glm::dvec2 px = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * double(kFramePx);
+        const int tx = std::clamp(static_cast<int>(px.x) / kTilePx * kTilePx, 0, kFramePx - kTilePx);
+        const int ty = std::clamp(static_cast<int>(px.y) / kTilePx * kTilePx, 0, kFramePx - kTilePx);
+        auto tile = frustum::crop(pair, frustum::CropRect<float>{float(tx), float(ty), float(kTilePx), float(kTilePx),
+                                                                 float(kFramePx), float(kFramePx)});
+        REQUIRE(tile.ok());
+        const glm::vec4 tile_clip = tile->matrix() * world; // float, as the GPU does it
+        const glm::dvec2 tile_px =
+            (glm::dvec2(tile_clip) / double(tile_clip.w) * 0.5 + 0.5) * double(kTilePx) + glm::dvec2(tx, ty);
+        worst_px = std::max(worst_px, glm::length(tile_px - px));
+        // The same frame drawn whole in float (a GPU with 65536-pixel targets).
+        const glm::vec4 full_clip = pair.matrix() * world;
+        const glm::dvec2 full_px = (glm::dvec2(full_clip) / double(full_clip.w) * 0.5 + 0.5) * double(kFramePx);
+        worst_full_px = std::max(worst_full_px, glm::length(full_px - px));
+    }
+    MESSAGE("65536^2 frame, 4096^2 tiles: a point lands within " << worst_px
+            << " px of its double-precision place (the frame drawn whole in float: " << worst_full_px << " px)");
+    CHECK(worst_px < 1.0 / 16.0);
+}
+
+} // TEST_SUITE
