@@ -19,6 +19,7 @@
 #include <scene/load_gltf.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace {
@@ -182,6 +183,32 @@ TEST_CASE("seen from outside, a floor the camera sees stays the derived mirror")
         REQUIRE(s.mirror);
         CHECK(render::fraction_in_view(cameras->main.pair, *s.mirror) >= render::kMinFloorInView);
     }
+}
+
+TEST_CASE("seen from outside looking up, where the floor is out of view, the derived mirror stands in front of the eye") {
+    auto loaded = scene::load_gltf(test_samples::model_path("box.gltf"));
+    REQUIRE(loaded.ok());
+    scene::Scene s = std::move(*loaded);
+    // From 5 m in front of the unit cube, at its height, looking 30 degrees up: the floor under it is below the frame.
+    auto projection = frustum::perspective<float>(0.8f, 16.0f / 9.0f, 0.1f, 100.0f, frustum::DepthRange::ZeroToOne);
+    auto view = frustum::look_at<float>(glm::vec3(0.0f, 0.0f, 5.0f), glm::vec3(0.0f, 5.0f * std::tan(0.5236f), 0.0f),
+                                        glm::vec3(0.0f, 1.0f, 0.0f));
+    REQUIRE(projection.ok());
+    REQUIRE(view.ok());
+    const frustum::MatrixPair<float> camera = frustum::compose(*projection, *view);
+    float floor_side_m = 0.0f;
+    {
+        scene::Scene without_camera = s; // the old rule's floor, for comparison
+        render::place_mirror(without_camera, render::MirrorRequest{});
+        REQUIRE(without_camera.mirror);
+        CHECK(render::fraction_in_view(camera, *without_camera.mirror) < render::kMinFloorInView);
+        floor_side_m = glm::length(without_camera.mirror->a1);
+    }
+    const auto placed = render::place_mirror(s, render::MirrorRequest{}, &camera);
+    CHECK(contains(placed, "in front of the camera (a floor under the model would be out of view)"));
+    REQUIRE(s.mirror);
+    CHECK(glm::length(s.mirror->a1) != doctest::Approx(floor_side_m));
+    CHECK(render::fraction_in_view(camera, *s.mirror) >= 0.2f);
 }
 
 } // TEST_SUITE
