@@ -58,15 +58,27 @@ scene::Bounds including(scene::Bounds bounds, const glm::vec3& point) {
 constexpr float kDerivedFarMargin = 1.05f; // the derived far plane: 5% beyond the farthest corner
 constexpr float kDerivedFarMinPerNear = 2.0f;
 
+// The distance from the camera's eye to the farthest corner of `bounds`.
+float farthest_corner_m(const scene::Camera& camera, const scene::Bounds& bounds) {
+    const glm::vec3 eye(camera.camera_to_world[3]);
+    float reach_m = 0.0f;
+    for (const glm::vec3& corner : scene::corners(bounds)) {
+        reach_m = std::max(reach_m, glm::length(corner - eye));
+    }
+    return reach_m;
+}
+
 // What far_note says: the file's far plane and the one the effects use.
-std::string far_note_text(const scene::Camera& camera, float far_m) {
+std::string far_note_text(const scene::Camera& camera, float far_m, const scene::Bounds& bounds) {
     const std::string had = camera.zfar_m ? "zfar " + number_text(*camera.zfar_m) + " is " +
                                                 number_text(*camera.zfar_m / camera.znear_m) + " x its znear " +
                                                 number_text(camera.znear_m) + " (a float pair holds up to " +
                                                 number_text(kMaxFarPerNear) + " x)"
                                           : "no zfar (an infinite far plane)";
+    const bool cut = far_m < farthest_corner_m(camera, bounds);
     return "camera '" + camera.name + "': " + had + "; every effect uses far = " + number_text(far_m) +
-           " m, derived from the scene's bounds (1.05 x the distance from the eye to their farthest corner)";
+           " m, derived from the scene's bounds (1.05 x the distance from the eye to their farthest corner" +
+           (cut ? ", cut to " + number_text(kMaxFarPerNear) + " x znear: the scene beyond it is not drawn)" : ")");
 }
 
 } // namespace
@@ -78,12 +90,7 @@ std::optional<float> derived_far_m(const scene::Camera& camera, const scene::Bou
     if (camera.zfar_m && (!perspective || *camera.zfar_m <= kMaxFarPerNear * near_m)) {
         return std::nullopt;
     }
-    const glm::vec3 eye(camera.camera_to_world[3]);
-    float reach_m = 0.0f;
-    for (const glm::vec3& corner : scene::corners(bounds)) {
-        reach_m = std::max(reach_m, glm::length(corner - eye));
-    }
-    float far_m = std::max(kDerivedFarMargin * reach_m, kDerivedFarMinPerNear * near_m);
+    float far_m = std::max(kDerivedFarMargin * farthest_corner_m(camera, bounds), kDerivedFarMinPerNear * near_m);
     if (perspective) {
         far_m = std::min(far_m, kMaxFarPerNear * near_m);
     }
@@ -168,7 +175,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     if (from_file) {
         file_camera = scene.cameras[static_cast<std::size_t>(main_camera)];
         if (const auto far_m = derived_far_m(*file_camera, scene.world_bounds)) {
-            far_note = far_note_text(*file_camera, *far_m);
+            far_note = far_note_text(*file_camera, *far_m, scene.world_bounds);
             file_camera->zfar_m = *far_m;
         }
     }

@@ -52,12 +52,15 @@ struct Cameras {
     std::optional<std::string> far_note;
 };
 
-// The largest far / near a float matrix pair keeps apart from an infinite
-// far plane with some precision (docs/any-scene.md, "Far planes"): the
-// perspective's depth terms hold n / (f - n) beside 1, whose float step is
-// 2^-24 = 6e-8; at f / n = 1e5 that term (1e-5) is still good to 0.6%, at
-// the 2e7 of a CAD export (5e-8) it rounds away and the pair is infinite.
-inline constexpr float kMaxFarPerNear = 1e5f;
+// The largest far / near the effects take from a file camera
+// (docs/any-scene.md, "Far planes"). A ZeroToOne perspective's far plane
+// F = m3 - m2 has the normal length n / (f - n) of its rows' size, and the
+// library reads it as absent (infinite, erratum 9) below 64 float epsilons
+// of that size (frustum/src/queries.cpp): about 1.5e-5, f / n = 6.5e4. At
+// the 2e7 of a CAD export (5e-8) it is below float's own step beside 1
+// (6e-8) and rounds away. 1e4 keeps a factor 6.5 from the library's limit,
+// and there n / (f - n) = 1e-4 is still good to 0.06% in float.
+inline constexpr float kMaxFarPerNear = 1e4f;
 
 // The far distance (m) the effects use for a file camera whose far plane is
 // absent, or (perspective) more than kMaxFarPerNear times its near one:

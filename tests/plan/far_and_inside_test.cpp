@@ -85,12 +85,28 @@ TEST_CASE("a file camera without zfar, or with zfar 2e7 x znear, gets a far plan
         REQUIRE_FALSE(refused.ok());
         CHECK(refused.error().find("--pivot") == 0);
     }
-    // A far plane the pair holds (room.gltf: zfar 50 = 500 x znear) is kept.
+    // A far plane the pair holds (room.gltf: zfar 50 = 500 x znear) is kept;
+    // one at 5e4 x znear, which the library still reads as finite, is replaced.
     const scene::Scene room = load("room.gltf");
     const render::Cameras kept = cameras_of(room);
     CHECK_FALSE(kept.far_note);
     CHECK(frustum::far_distance(kept.main.pair).value() == doctest::Approx(50.0f).epsilon(1e-3));
     CHECK_FALSE(render::derived_far_m(room.cameras[0], room.world_bounds));
+    scene::Camera far_out = room.cameras[0];
+    far_out.zfar_m = 5e4f * far_out.znear_m;
+    const auto derived = render::derived_far_m(far_out, room.world_bounds);
+    REQUIRE(derived);
+    CHECK(*derived < 50.0f);
+}
+
+TEST_CASE("a derived far plane is at most 1e4 x the near one, and the note says what it cuts") {
+    scene::Scene s = load("room_no_zfar.gltf");
+    s.cameras[0].znear_m = 1e-4f; // 1e4 x znear = 1 m, inside the room
+    const render::Cameras cameras = cameras_of(s);
+    CHECK(contains(cameras.far_note, "cut to 1e+04 x znear"));
+    const auto far_m = frustum::far_distance(cameras.main.pair);
+    REQUIRE_MESSAGE(far_m.ok(), far_m.error());
+    CHECK(*far_m == doctest::Approx(1.0f).epsilon(1e-3));
 }
 
 TEST_CASE("the recursion ends cleanly at the first level whose link leaves nothing of the view: the levels before draw") {
