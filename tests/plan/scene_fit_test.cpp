@@ -1,16 +1,20 @@
 // The derived defaults of the lens and non-affine effects (plan/scene_fit:
 // fit_lens, fit_non_affine) and the explicit --lens-center, --lens-radius,
-// --slit and --pivot, against what docs/any-scene.md says they are, worked
+// --slit, --pivot, --mirror-plane and --mirror-rect, against what docs/any-scene.md says they are, worked
 // out here with GLM's own camera (not the library's near-plane frame).
+#include "showcase.hpp"
+
 #include <doctest/doctest.h>
 
 #include <frustum/projection.hpp>
+#include <plan/mirror_placement.hpp>
 #include <plan/scene_fit.hpp>
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cmath>
 
 namespace {
@@ -92,6 +96,48 @@ TEST_CASE("fit_non_affine: pivot at the model centre's depth, slit a third of it
     REQUIRE_MESSAGE(given.ok(), given.error());
     CHECK(given->slit_depth_m == 1.0f);
     CHECK(given->pivot_depth_m == 4.0f);
+}
+
+} // TEST_SUITE
+
+// --mirror-plane and --mirror-rect (render::place_mirror): the mirror the
+// options say, on the showcase, whatever its own mirror node.
+TEST_SUITE("plan") {
+
+TEST_CASE("--mirror-plane puts the mirror in that plane, reflecting towards (a, b, c); --mirror-rect is the rectangle given") {
+    {
+        scene::Scene s = render_test::showcase();
+        render::MirrorRequest request;
+        request.plane = glm::vec4(0.0f, 2.0f, 0.0f, 1.0f); // y = -0.5, unnormalized
+        const auto said = render::place_mirror(s, request);
+        REQUIRE(s.mirror.has_value());
+        CHECK(said.has_value()); // stderr says where it went
+        const scene::MirrorRect& m = *s.mirror;
+        for (const glm::vec3& p : {m.corner, m.corner + m.a1, m.corner + m.a2, m.corner + m.a1 + m.a2}) {
+            CHECK(std::abs(p.y + 0.5f) <= 1e-5f);
+        }
+        const glm::vec3 n = glm::normalize(glm::cross(m.a1, m.a2));
+        CHECK(n.y >= 1.0f - 1e-6f); // reflects towards +y
+        // Under the model's centre (README: a square of the model's diagonal under its centre).
+        const glm::vec3 centre = m.corner + 0.5f * (m.a1 + m.a2);
+        const glm::vec3 middle = 0.5f * (s.world_bounds.min + s.world_bounds.max);
+        CHECK(std::abs(centre.x - middle.x) <= 1e-4f);
+        CHECK(std::abs(centre.z - middle.z) <= 1e-4f);
+        CHECK(std::abs(glm::length(m.a1) - glm::length(m.a2)) <= 1e-4f);
+    }
+    {
+        scene::Scene s = render_test::showcase();
+        render::MirrorRequest request;
+        request.rect = std::array<float, 9>{1.0f, 2.0f, -3.0f, 2.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+        render::place_mirror(s, request);
+        REQUIRE(s.mirror.has_value());
+        const scene::MirrorRect& m = *s.mirror;
+        const glm::vec3 centre = m.corner + 0.5f * (m.a1 + m.a2);
+        CHECK(std::abs(centre.x - 1.0f) + std::abs(centre.y - 2.0f) + std::abs(centre.z + 3.0f) <= 1e-5f);
+        CHECK(std::abs(glm::length(m.a1) - 2.0f) <= 1e-5f);
+        CHECK(std::abs(glm::length(m.a2) - 1.0f) <= 1e-5f);
+        CHECK(glm::normalize(glm::cross(m.a1, m.a2)).z >= 1.0f - 1e-6f); // a x b = +z
+    }
 }
 
 } // TEST_SUITE
