@@ -11,14 +11,20 @@
 #include <utility>
 
 // Why kMaxPosterSidePx is 65536 (2^16) per side:
-// - Time: llvmpipe's rate (tests/gl/poster_slow/, docs/performance.md)
-//   makes a 65536 x 65536 poster (4295 Mpx) hours of work; larger is not a
-//   render anyone waits for on this renderer.
-// - Float crop offsets: a tile's pair is the whole frame's cropped in float
-//   (eq. 14-15, scale W / bw up to 65536 for a 1-pixel tile). The rounding
-//   of a clip position grows with W / bw; tests/gl/poster_slow/ measures
-//   how far a world point lands from where the double-precision frame puts
-//   it, at 65536 in 4096-pixel tiles.
+// - Float crop offsets, the binding reason: a tile's pair is the whole
+//   frame's cropped in float (eq. 14-15), and the GPU multiplies it with
+//   float vertices. The worst of 20000 points over the showcase's view
+//   lands, in its 4096^2 tile, this far from its double-precision place
+//   (test_poster_slow, "the float crop at 65536 pixels"):
+//     16384: 0.057 px, 32768: 0.22 px, 65536: 0.27 px, 131072: 0.64 px
+//   (the frame drawn whole in float: 0.04, 0.08, 0.16, 0.32 px). Up to
+//   65536 two tiles sharing an edge place it less than a pixel apart; at
+//   131072 they may not, and a seam could show.
+// - Time: llvmpipe on this (shared, 2-core) machine draws posters with 4x
+//   MSAA at 2.8 (portal) to 9.4 (mirror) Mpx/s at 16384^2, 3.0 to 19.6 at
+//   4096^2 in 512^2 tiles (test_poster_slow), so 65536^2 (4295 Mpx) is 8
+//   to 26 minutes of rendering before compression, and every doubling of
+//   the side quadruples it.
 // - Sizes: 65536^2 x 4 bytes = 16 GiB of pixels: every byte count here is
 //   std::size_t, and 65536 fits the int pixel coordinates of GL
 //   (glViewport, glScissor) and of frustum::Tile with room to spare.

@@ -34,7 +34,10 @@ struct PosterLayout {
 // The tile size for a width_px x height_px frame: the requested one
 // (--poster-tile), else the largest the context's targets hold (at most
 // 4096 x 4096) with the tile height cut so that one row of tiles (width_px x
-// tile_height_px RGBA8) stays within a fixed budget stated in poster.cpp.
+// tile_height_px RGBA8) stays within 32 MiB and one tile within 4 Mpx (with
+// 4x MSAA llvmpipe holds a tile's samples in RAM: 128 MiB), e.g. 4096 x 1024
+// tiles for a 4096-wide frame, 4096 x 256 for 32768, 4096 x 128 for 65536.
+// A requested tile is cut to the frame.
 // Errors name the value and the limit, e.g.
 // "render::poster_layout(): tile 9000x512 exceeds the context's largest target 8192x8192".
 frustum::Result<PosterLayout> poster_layout(const gl::Functions& fn, int width_px, int height_px,
@@ -51,7 +54,14 @@ using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
 // Renders `effect` as a layout.width_px x layout.height_px frame
 // (options.width_px / height_px are ignored; options.msaa_samples as in
 // Renderer::render()); `cameras` are made for the whole frame's aspect
-// ratio. Each tile is multisampled and resolved as a direct render is.
+// ratio. Each tile is multisampled and resolved as a direct render is, and
+// is Renderer::render_into() with its FrameWindow: the effect planned for the
+// whole frame, the tile drawing its crop. One view only (cameras.main, and
+// cameras.overview for the frustum effect): a stereo pair is two posters, so
+// a caller refuses stereo above one target or renders each eye's cameras
+// as a poster of its own. Errors: a layout outside 1..kMaxPosterSidePx or a
+// tile larger than the frame, a target the context cannot make, a pass's
+// error, the sink's error.
 frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout,
                               const PosterRowSink& sink, const PosterProgress& progress = {});
