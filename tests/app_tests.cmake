@@ -39,9 +39,5 @@ add_executable(test_poster_slow EXCLUDE_FROM_ALL gl/poster_slow/main.cpp gl/post
 target_link_libraries(test_poster_slow PRIVATE doctest::doctest frustum_test_support frustum::frustum ${_app_libs})
 target_compile_definitions(test_poster_slow PRIVATE FRUSTUM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 frustum_test_suite(cli frustum::frustum ${_app_libs})
-if(TARGET frustum-demo) # tests/cli/poster_cli_test.cpp runs it
-  target_compile_definitions(test_cli PRIVATE FRUSTUM_DEMO_EXE="$<TARGET_FILE:frustum-demo>")
-  add_dependencies(test_cli frustum-demo)
-endif()
 include(${CMAKE_CURRENT_SOURCE_DIR}/robustness/suite.cmake OPTIONAL) # frustum_test_suite(robustness ...) + tool paths
 include(${CMAKE_CURRENT_SOURCE_DIR}/window/suite.cmake OPTIONAL) # frustum_test_suite(window ...) + frustum-demo's path

@@ -1,2 +1,3 @@
 // test_cli: frustum-vectors (and later command-line tools), label "cli".
-#include "../skips_main.hpp" // doctest's main; a skip (no GL for the poster tests) exits 77
+#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include <doctest/doctest.h>

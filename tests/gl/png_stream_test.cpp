@@ -3,11 +3,11 @@
 // finish() leaves no file; bad paths and misuse are one-line errors.
 #include <image/png.hpp>
 #include <image/png_stream.hpp>
-#include <support/temp_dir.hpp>
 
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +15,23 @@
 namespace fs = std::filesystem;
 
 namespace {
+
+// A fresh empty folder, removed with everything in it at scope exit
+// (tests/gl may not use tests/support: cmake/layers.cmake).
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "frustum-png-stream-XXXXXX").string();
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path_ = pattern;
+    }
+    ~TempDir() { fs::remove_all(path_); }
+    const fs::path& path() const { return path_; }
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    fs::path path_;
+};
 
 // A w x h image whose every channel of every pixel differs from its
 // neighbours' (so a row out of place or a channel swapped shows).
@@ -47,7 +64,7 @@ TEST_CASE("png_stream: rows in bands of any height read back as the whole image"
     const int w = 301, h = 77;
     for (int level : {1, 3, 6}) {
         CAPTURE(level);
-        support::TempDir level_dir;
+        TempDir level_dir;
         const std::string path = (level_dir / "stream.png").string();
         auto stream = image::PngStream::open(path, w, h, level);
         REQUIRE_MESSAGE(stream.ok(), stream.error());
@@ -71,7 +88,7 @@ TEST_CASE("png_stream: rows in bands of any height read back as the whole image"
 }
 
 TEST_CASE("png_stream: a stream given up before finish() leaves no file, not even an old one replaced") {
-    support::TempDir dir;
+    TempDir dir;
     const std::string path = (dir / "poster.png").string();
     {
         auto stream = image::PngStream::open(path, 16, 8);
@@ -94,7 +111,7 @@ TEST_CASE("png_stream: a stream given up before finish() leaves no file, not eve
 }
 
 TEST_CASE("png_stream: a bad path, a bad size and rows that do not fit are one-line errors") {
-    support::TempDir dir;
+    TempDir dir;
     const std::string missing = (dir / "missing").string() + "/a.png";
     const auto absent = image::PngStream::open(missing, 4, 4);
     REQUIRE_FALSE(absent.ok());

@@ -4,9 +4,8 @@
 // 4500x64, 3000x32) must agree, and its 2x box-filtered copy must match a
 // DIRECT 4500x32 render of the same view (Renderer::render, no tiles, no
 // streaming) within what rasterizing at twice the resolution changes.
-#include "../skips.hpp"
+#include "support.hpp"
 
-#include <gl/context.hpp>
 #include <image/compare.hpp>
 #include <image/image.hpp>
 #include <image/png.hpp>
@@ -15,22 +14,13 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #if defined(FRUSTUM_DEMO_EXE)
 namespace {
-
-bool no_gl() {
-    static const std::string why_not = [] {
-        const auto context = gl::create_offscreen_context_with_fallback({});
-        return context.ok() ? std::string() : context.error();
-    }();
-    if (!why_not.empty()) {
-        test_skips::skip(why_not);
-    }
-    return !why_not.empty();
-}
 
 support::Outcome demo(std::vector<std::string> args) {
     support::Launch launch;
@@ -69,10 +59,10 @@ image::Image half(const image::Image& in) {
 
 } // namespace
 
-TEST_SUITE("cli") {
+TEST_SUITE("robustness") {
 
 TEST_CASE("poster: render --size 9000x64 (wider than one 8192 target) is the same frame in any tiling and as a direct render") {
-    if (no_gl()) {
+    if (rob::no_gl()) {
         return;
     }
     support::TempDir dir;
@@ -132,7 +122,7 @@ TEST_CASE("poster: --size above 65536, a bad --poster-tile and --stereo above on
         CHECK(outcome.err == c.message);
         CHECK(outcome.out.empty());
     }
-    if (no_gl()) {
+    if (rob::no_gl()) {
         return;
     }
     const support::Outcome stereo = demo({"render", "--effect", "plain", "--out", out, "--size", "9000x64", "--stereo"});
@@ -144,7 +134,7 @@ TEST_CASE("poster: --size above 65536, a bad --poster-tile and --stereo above on
 }
 
 TEST_CASE("poster: the --poster-tile value is the tiling used, and the file appears only when complete") {
-    if (no_gl()) {
+    if (rob::no_gl()) {
         return;
     }
     support::TempDir dir;
