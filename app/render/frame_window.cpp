@@ -42,7 +42,16 @@ frustum::Result<frustum::MatrixPair<float>> crop_part(const frustum::MatrixPair<
     if (part.x == image.x && part.y == image.y && part.width == image.width && part.height == image.height) {
         return pair; // the whole image: bit for bit the pair a direct render draws with
     }
-    return frustum::crop(pair, relative_rect(image, part));
+    // In double, rounded to float once at the end: the float crop's own
+    // rounding (its terms grow with the scale W / bw) would add to the
+    // GPU's (test_poster_slow measures both).
+    const frustum::CropRect<float> r = relative_rect(image, part);
+    auto cropped = frustum::crop(pair.cast<double>(), frustum::CropRect<double>{r.x, r.y, r.width, r.height,
+                                                                             r.full_width, r.full_height});
+    if (!cropped) {
+        return cropped.take_error();
+    }
+    return cropped->cast<float>();
 }
 
 frustum::Result<frustum::MatrixPair<float>> crop_to_window(const frustum::MatrixPair<float>& pair,

@@ -12,11 +12,11 @@
 
 // Why kMaxPosterSidePx is 65536 (2^16) per side:
 // - Float crop offsets, the binding reason: a tile's pair is the whole
-//   frame's cropped in float (eq. 14-15), and the GPU multiplies it with
-//   float vertices. The worst of 20000 points over the showcase's view
-//   lands, in its 4096^2 tile, this far from its double-precision place
-//   (test_poster_slow, "the float crop at 65536 pixels"):
-//     16384: 0.057 px, 32768: 0.22 px, 65536: 0.27 px, 131072: 0.64 px
+//   frame's cropped (eq. 14-15, in double, then rounded to float) and the
+//   GPU multiplies it with float vertices. The worst of 20000 points over
+//   the showcase's view lands, in its 4096^2 tile, this far from its
+//   double-precision place (test_poster_slow, "the float crop at 65536"):
+//     16384: 0.057 px, 32768: 0.16 px, 65536: 0.27 px, 131072: 0.59 px
 //   (the frame drawn whole in float: 0.04, 0.08, 0.16, 0.32 px). Up to
 //   65536 two tiles sharing an edge place it less than a pixel apart; at
 //   131072 they may not, and a seam could show.

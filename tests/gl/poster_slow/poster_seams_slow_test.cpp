@@ -5,6 +5,7 @@
 #include "../render_test_support.hpp"
 
 #include <frustum/crop.hpp>
+#include <render/frame_window.hpp>
 #include <render/poster.hpp>
 
 #include <algorithm>
@@ -187,8 +188,8 @@ CropError crop_error(int frame_px) {
         const glm::dvec2 px = to_px(m * glm::dvec4(world), frame_px);
         const int tx = std::clamp(static_cast<int>(px.x) / kTilePx * kTilePx, 0, frame_px - kTilePx);
         const int ty = std::clamp(static_cast<int>(px.y) / kTilePx * kTilePx, 0, frame_px - kTilePx);
-        auto tile = frustum::crop(pair, frustum::CropRect<float>{float(tx), float(ty), float(kTilePx),
-                                                                 float(kTilePx), float(frame_px), float(frame_px)});
+        auto tile = render::crop_to_window(pair, render::FrameWindow{frame_px, frame_px,
+                                                                     render::PixelRect{tx, ty, kTilePx, kTilePx}});
         REQUIRE(tile.ok());
         const glm::dvec2 tile_px = to_px(glm::dvec4(tile->matrix() * world), kTilePx) + glm::dvec2(tx, ty);
         worst.tile_px = std::max(worst.tile_px, glm::length(tile_px - px));
