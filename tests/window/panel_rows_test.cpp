@@ -139,7 +139,7 @@ TEST_CASE("the scene files beside one: its folder's and the folders' next to it,
         for (const auto& file : test_samples::gltf_files_under(data / folder)) expected.push_back(file.string());
     }
     std::sort(expected.begin(), expected.end());
-    REQUIRE(expected.size() == 9 + 16);
+    REQUIRE(expected.size() == 9 + 19);
     CHECK(demo::scene_files_beside(test_samples::model_path("box.gltf")) == expected);
     // The showcase: itself among them (its folder's only scene file).
     const std::string showcase = std::string(FRUSTUM_SOURCE_DIR) + "/assets/showcase.gltf";
