@@ -87,7 +87,7 @@ std::vector<render::Effect> effects() {
             out.push_back(effect);
         }
     }
-    REQUIRE_MESSAGE(!out.empty(), "FRUSTUM_POSTER_EFFECTS=" << names << " names no effect (plain, mirror, ...)");
+    REQUIRE_MESSAGE(!out.empty(), "FRUSTUM_POSTER_EFFECTS=" << std::string(names ? names : "") << " names no effect (plain, mirror, ...)");
     return out;
 }
 
