@@ -49,7 +49,7 @@ inline std::vector<std::filesystem::path> scene_files() {
     REQUIRE_MESSAGE(std::filesystem::is_directory(root), "no generated models folder " << root.string());
     const auto models = gltf_files_under(root);
     files.insert(files.end(), models.begin(), models.end());
-    REQUIRE(files.size() >= 17); // the showcase and the 16 generated models
+    REQUIRE(files.size() >= 20); // the showcase and the 19 generated models
     return files;
 }
 
