@@ -37,7 +37,7 @@ set(FRUSTUM_LAYERS
   "tests/scene:scene image frustum support"
   "tests/fuzz:scene vectors frustum"
   "tests/robustness:scene vectors gl image frustum support"
-  "tests/gl:render reference precision plan scene gl image frustum"
+  "tests/gl:render reference precision plan scene gl image frustum support"
   "tests/bench:render reference plan scene gl image frustum"
   "tests/window:window demo render plan scene gl image frustum support"
   "tests/web:image frustum"

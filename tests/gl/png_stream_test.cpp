@@ -4,6 +4,8 @@
 #include <image/png.hpp>
 #include <image/png_stream.hpp>
 
+#include <support/temp_dir.hpp>
+
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -16,22 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh empty folder, removed with everything in it at scope exit
-// (tests/gl may not use tests/support: cmake/layers.cmake).
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "frustum-png-stream-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path_ = pattern;
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    fs::path path_;
-};
+using support::TempDir;
 
 // A w x h image whose every channel of every pixel differs from its
 // neighbours' (so a row out of place or a channel swapped shows).
