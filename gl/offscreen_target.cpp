@@ -154,15 +154,17 @@ frustum::Result<OffscreenTarget> OffscreenTarget::create(const Functions& fn,
         }
         fn.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_.id());
     }
-    const GLenum depth_format =
-        options.depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F;
-    auto depth = make_renderbuffer(fn, depth_format, options.width, options.height, target.samples_);
-    if (!depth) {
-        return frustum::Error{depth.error()};
+    if (options.depth != DepthFormat::None) {
+        const GLenum depth_format =
+            options.depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F;
+        auto depth = make_renderbuffer(fn, depth_format, options.width, options.height, target.samples_);
+        if (!depth) {
+            return frustum::Error{depth.error()};
+        }
+        target.depth_renderbuffer_ = std::move(*depth);
+        fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                   target.depth_renderbuffer_.id());
     }
-    target.depth_renderbuffer_ = std::move(*depth);
-    fn.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                               target.depth_renderbuffer_.id());
 
     if (auto error = check_error(fn, kCreate); !error) {
         return frustum::Error{error.error()};
@@ -177,6 +179,22 @@ frustum::Result<OffscreenTarget> OffscreenTarget::create(const Functions& fn,
 void OffscreenTarget::bind() const {
     fn_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     fn_->Viewport(0, 0, width_, height_);
+}
+
+void OffscreenTarget::keep_resolved_only() {
+    resolve();
+    if (samples_ > 1) {
+        // Deleting the drawing framebuffer first lets the renderbuffers
+        // attached to it go (an attached renderbuffer outlives its name).
+        fn_->BindFramebuffer(GL_FRAMEBUFFER, resolve_framebuffer_.id());
+        framebuffer_ = std::move(resolve_framebuffer_);
+        samples_ = 1; // resolved_framebuffer() is framebuffer_ from now on; resolve() has nothing to do
+        multisample_color_.reset();
+    } else if (depth_renderbuffer_) {
+        fn_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+        fn_->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    }
+    depth_renderbuffer_.reset();
 }
 
 void OffscreenTarget::resolve() const {

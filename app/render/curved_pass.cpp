@@ -86,29 +86,39 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CurvedMirror&
 }
 
 // Renders every patch's view into its tile: tile (i, j) is the rectangle
-// (i w, j h, w, h) of the atlas, from the bottom-left.
+// (i w, j h, w, h) of the atlas, from the bottom-left. The atlas is single-
+// sampled colour only; each patch is drawn into one tile-sized target
+// sampled like the frame, resolved there and copied into its tile (a
+// resolve blit keeps its rectangle; the copy moves it). So the atlas's
+// multisampled colour and depth (4x MSAA at 4096 x 4096: 512 MiB) are never
+// alive at once, only one tile's; the pixels are the same.
 frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const CurvedPlan& plan,
                                                   const glm::ivec2& tile, int mirror_instance) {
     auto atlas = gl::OffscreenTarget::create(
-        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::Depth24, ctx.samples});
-    if (!atlas) {
-        return frustum::Error{kDraw + std::string("atlas: ") + atlas.error()};
+        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
+    auto scratch = gl::OffscreenTarget::create(
+        ctx.fn, {tile.x, tile.y, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, ctx.samples});
+    if (!atlas || !scratch) {
+        return frustum::Error{kDraw + std::string("atlas: ") + (!atlas ? atlas.error() : scratch.error())};
     }
     const gl::Functions& fn = ctx.fn;
-    set_frame_state(ctx);
-    fn.Enable(GL_SCISSOR_TEST);
     for (const PatchFrustum& patch : plan.patches) {
-        fn.Viewport(patch.i * tile.x, patch.j * tile.y, tile.x, tile.y);
-        fn.Scissor(patch.i * tile.x, patch.j * tile.y, tile.x, tile.y);
+        scratch->bind();
+        set_frame_state(ctx);
         clear_frame(ctx);
         if (patch.pair) {
             SceneDraw draw(*patch.pair);
             draw.skip_instance = mirror_instance;
             draw_scene(ctx, draw);
         }
+        scratch->resolve();
+        fn.BindFramebuffer(GL_READ_FRAMEBUFFER, scratch->resolved_framebuffer().id());
+        fn.ReadBuffer(GL_COLOR_ATTACHMENT0);
+        fn.BindFramebuffer(GL_DRAW_FRAMEBUFFER, atlas->framebuffer().id());
+        fn.BlitFramebuffer(0, 0, tile.x, tile.y, patch.i * tile.x, patch.j * tile.y, (patch.i + 1) * tile.x,
+                           (patch.j + 1) * tile.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
-    fn.Disable(GL_SCISSOR_TEST);
-    atlas->resolve();
+    fn.BindFramebuffer(GL_FRAMEBUFFER, 0);
     return atlas;
 }
 
