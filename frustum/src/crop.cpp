@@ -194,17 +194,16 @@ Status crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int co
 template <class T>
 Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px, int height_px, int columns,
                                         int rows) {
-    using detail::tile_edge;
     if (!tiles_fit(width_px, height_px, columns, rows)) {
         return tiles_refused<T>(width_px, height_px, columns, rows).take_error();
     }
     const detail::Cols<T> m = detail::load(pair.matrix());
     const detail::Cols<T> inv = detail::load(pair.inverse());
     std::vector<Vec4<T>> parts(kColumnParts * static_cast<std::size_t>(columns));
-    std::vector<int> x_edges(static_cast<std::size_t>(columns) + 1); // one division each, not per tile
-    for (int c = 0; c <= columns; ++c) {
-        x_edges[static_cast<std::size_t>(c)] = tile_edge(c, width_px, columns);
-    }
+    std::vector<int> x_edges(static_cast<std::size_t>(columns) + 1); // once, not per tile
+    std::vector<int> y_edges(static_cast<std::size_t>(rows) + 1);
+    detail::tile_edges(width_px, columns, x_edges.data());
+    detail::tile_edges(height_px, rows, y_edges.data());
     for (int c = 0; c < columns; ++c) {
         column_parts(m, inv, x_edges[static_cast<std::size_t>(c)], x_edges[static_cast<std::size_t>(c) + 1],
                      width_px, &parts[kColumnParts * static_cast<std::size_t>(c)]);
@@ -214,7 +213,7 @@ Result<std::vector<Tile<T>>> crop_tiles(const MatrixPair<T>& pair, int width_px,
     std::vector<Tile<T>> tiles;
     tiles.reserve(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
     for (int r = 0; r < rows; ++r) {
-        const int y0 = tile_edge(r, height_px, rows), y1 = tile_edge(r + 1, height_px, rows);
+        const int y0 = y_edges[static_cast<std::size_t>(r)], y1 = y_edges[static_cast<std::size_t>(r) + 1];
         const RowParts<T> row = row_parts(m, inv, y0, y1, height_px);
         for (int c = 0; c < columns; ++c) {
             const int x0 = x_edges[static_cast<std::size_t>(c)], x1 = x_edges[static_cast<std::size_t>(c) + 1];

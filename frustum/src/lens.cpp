@@ -55,14 +55,15 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
         detail::TileGridWriter::clear(out);
         return error;
     };
-    const auto frame = near_plane_frame(camera);
-    if (!frame) {
-        return failed(frame.take_error_in("frustum::lens_tiles()"));
+    auto frame_result = near_plane_frame(camera);
+    if (!frame_result) {
+        return failed(frame_result.take_error_in("frustum::lens_tiles()"));
     }
+    const NearPlaneFrame<T>* frame = &*frame_result; // checked once
     // How much farther the far plane is than the near plane, seen from the
     // eye: |F(eye)| / |F.xyz| over |N(eye)| / |N.xyz| (raw planes, no
     // normalization of the other four).
-    const auto camera_planes = raw_planes(camera);
+    const DepthPlanes<T> camera_planes = raw_depth_planes(camera);
     if (!camera_planes.far) {
         return failed(detail::error_text("lens_tiles", "needs a finite far plane", ""));
     }

@@ -9,23 +9,33 @@
 namespace frustum {
 
 template <class T>
-FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
+DepthPlanes<T> raw_depth_planes(const MatrixPair<T>& pair) {
     const Mat4<T>& m = pair.matrix();
-    const Vec4<T> m0 = row(m, 0), m1 = row(m, 1), m2 = row(m, 2), m3 = row(m, 3);
+    const Vec4<T> m2 = row(m, 2), m3 = row(m, 3);
     const DepthRange depth = pair.depth();
     const T s = clip_z_span<T>(depth) > T(0) ? T(1) : T(-1);
-    FrustumPlanes<T> p;
-    p.left = Plane<T>(m3 + m0);   // eq. 1: x >= -w
-    p.right = Plane<T>(m3 - m0);  //        x <= w
-    p.bottom = Plane<T>(m3 + m1); //        y >= -w
-    p.top = Plane<T>(m3 - m1);    //        y <= w
-    p.near = Plane<T>(s * (m2 - clip_z_near<T>(depth) * m3)); // z on the near side
+    DepthPlanes<T> p{Plane<T>(s * (m2 - clip_z_near<T>(depth) * m3)), std::nullopt}; // z on the near side
     const Plane<T> far(s * (clip_z_far<T>(depth) * m3 - m2));
     // An infinite far plane has a (numerically) zero normal: erratum 9.
     const T scale = glm::length(Vec3<T>(m3)) + glm::length(Vec3<T>(m2));
     if (glm::length(far.normal()) > detail::rounding_floor<T>() * scale) {
         p.far = far;
     }
+    return p;
+}
+
+template <class T>
+FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
+    const Mat4<T>& m = pair.matrix();
+    const Vec4<T> m0 = row(m, 0), m1 = row(m, 1), m3 = row(m, 3);
+    DepthPlanes<T> depth = raw_depth_planes(pair);
+    FrustumPlanes<T> p;
+    p.left = Plane<T>(m3 + m0);   // eq. 1: x >= -w
+    p.right = Plane<T>(m3 - m0);  //        x <= w
+    p.bottom = Plane<T>(m3 + m1); //        y >= -w
+    p.top = Plane<T>(m3 - m1);    //        y <= w
+    p.near = depth.near;
+    p.far = depth.far;
     return p;
 }
 
@@ -130,15 +140,26 @@ Result<T> far_distance(const MatrixPair<T>& pair) {
 
 template <class T>
 Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
-    const KeyPoints<T> k = key_points(camera); // once: eye_point() would compute them again
+    // key_points()' near corners and eye, the same expressions (same bits),
+    // without its far corners, centre and second raw_planes(): lens_tiles
+    // calls this once per grid, a tenth of a 4 x 4 grid's time.
+    const Mat4<T>& inv = camera.inverse();
+    const Mat4<T>& m = camera.matrix();
+    const DepthRange depth = camera.depth();
+    const T s = clip_z_span<T>(depth) > T(0) ? T(1) : T(-1);
+    const T z_near = clip_z_near<T>(depth);
+    const Vec4<T> near_row = s * (row(m, 2) - z_near * row(m, 3)); // raw_planes(camera).near
+    const Vec4<T> eye_h = glm::dot(near_row, inv[2]) > T(0) ? -inv[2] : inv[2]; // eq. 7, key_points().eye
     const T tolerance = infinity_tolerance<T>();
-    const Vec4<T> eye = to_point(k.eye, tolerance); // eye_point()
+    const Vec4<T> eye = to_point(eye_h, tolerance); // eye_point()
     if (eye.w != T(1)) {
         return detail::error_text("near_plane_frame", "needs a perspective camera (finite eye)", "");
     }
     Vec3<T> c[4];
     for (int i = 0; i < 4; ++i) {
-        const Vec4<T> p = to_point(k.corners[i], tolerance);
+        const Vec4<T> clip = clip_corner<T>(i, depth);
+        // eq. 8: C = x m0' + y m1' + z m2' + m3'
+        const Vec4<T> p = to_point(clip.x * inv[0] + clip.y * inv[1] + clip.z * inv[2] + inv[3], tolerance);
         if (p.w != T(1)) {
             return detail::error<T>("near_plane_frame", "near corner is not a finite point", {{"corner", T(i + 1)}});
         }
@@ -158,6 +179,7 @@ Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
 
 #define FRUSTUM_INSTANTIATE(T)                                              \
     template FrustumPlanes<T> raw_planes(const MatrixPair<T>&);             \
+    template DepthPlanes<T> raw_depth_planes(const MatrixPair<T>&);         \
     template FrustumPlanes<T> planes(const MatrixPair<T>&);                 \
     template DivisionPlanes<T> division_planes(const MatrixPair<T>&);       \
     template Vec4<T> clip_corner<T>(int, DepthRange);                       \

@@ -5,6 +5,7 @@
 #include "frustum/detail/finite.hpp"
 #include "frustum/reflect.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -96,6 +97,25 @@ bool solve_positive_definite(const Mat3<T>& A, const Vec3<T>& g, Vec3<T>& x) {
     return detail::finite3(x);
 }
 
+// The smallest eigenvalue of a symmetric 3x3 A (the closed form of the
+// characteristic cubic's roots, Smith 1961: A = q I + p B, the roots of
+// det(B - b I) = 0 are 2 cos(phi + 2 k pi / 3), phi = acos(det(B) / 2) / 3).
+template <class T>
+T smallest_eigenvalue(const Mat3<T>& A) {
+    const T off = A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
+    const T q = (A[0][0] + A[1][1] + A[2][2]) / T(3);
+    if (!(off > T(0))) {
+        return std::min(std::min(A[0][0], A[1][1]), A[2][2]);
+    }
+    const T p = std::sqrt(((A[0][0] - q) * (A[0][0] - q) + (A[1][1] - q) * (A[1][1] - q) +
+                           (A[2][2] - q) * (A[2][2] - q) + T(2) * off) /
+                          T(6));
+    const Mat3<T> B = (A - q * Mat3<T>(T(1))) / p;
+    const T half_det = std::clamp(glm::determinant(B) / T(2), T(-1), T(1));
+    const T phi = std::acos(half_det) / T(3);
+    return q + T(2) * p * std::cos(phi + T(2.0943951023931954923)); // + 2 pi / 3: the smallest root
+}
+
 // Where three planes meet, if they do (Cramer's rule).
 template <class T>
 bool intersect3(const Plane<T>& a, const Plane<T>& b, const Plane<T>& c, Vec3<T>& out) {
@@ -177,11 +197,15 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
     }
 
     // Newton's method on F with its analytic Hessian, damped (Levenberg-
-    // Marquardt: (mu I - H) step = grad, mu grown until the step gains and
-    // stays behind the near plane, shrunk after each gain). F is flat along
-    // the patch's axis (a near-zero eigenvalue of H), where a plain Newton
-    // step is unbounded; the damping bounds it. Stops when a step gains
-    // less than `tolerance`. Every solve counts as an iteration.
+    // Marquardt: (mu I - H) step = grad). F is flat along the patch's axis
+    // (a near-zero eigenvalue of H, of either sign), where a plain Newton
+    // step is unbounded. Where -H + mu I is not positive definite, mu is
+    // raised past -H's smallest eigenvalue at once (closed form; no point is
+    // tried). A tried step that does not gain, or leaves the near plane's
+    // back, raises mu tenfold; a step that gains lowers it a hundredfold.
+    // Stops when a step gains less than `tolerance`. Every tried step (an
+    // evaluation of F and its derivatives at a new point) counts as an
+    // iteration.
     Vec3<T> gradient;
     Mat3<T> hessian;
     T value = objective_derivatives(target, origin, gradient, hessian);
@@ -190,47 +214,51 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
                              std::numeric_limits<T>::min());
     T damping = T(0);
     int rejected = 0;
+    int shifts = 0;
     while (iterations < max_iterations) {
         if (!(glm::dot(gradient, gradient) > T(0))) {
             break;
         }
-        ++iterations;
         Mat3<T> system = -hessian;
         for (int k = 0; k < 3; ++k) {
             system[k][k] += damping * scale;
         }
         Vec3<T> step;
-        bool accepted = false;
-        if (solve_positive_definite(system, gradient, step)) {
-            // The gain the quadratic model predicts, g . step / 2 (exact for a
-            // pure Newton step, an overestimate when damped): below a
-            // thousandth of `tolerance` means converged (the step after would
-            // gain less than `tolerance` by far), and there a step would only
-            // round F down.
-            if (!(glm::dot(gradient, step) > T(2e-3) * tolerance)) {
-                break;
+        if (!solve_positive_definite(system, gradient, step)) {
+            // Twice the shift that makes it semi-definite, at least 1e-2.
+            const T needed = -smallest_eigenvalue(Mat3<T>(-hessian)) / scale;
+            const T next = std::max(T(2) * needed, damping > T(0) ? damping * T(10) : T(1e-2));
+            if (!(next > damping) || !std::isfinite(next) || ++shifts > 60) {
+                break; // no damping makes a system to solve (NaN in H)
             }
-            const Vec3<T> candidate = origin + step;
-            Vec3<T> candidate_gradient;
-            Mat3<T> candidate_hessian;
-            const T candidate_value =
-                objective_derivatives(target, candidate, candidate_gradient, candidate_hessian);
-            if (near.distance(candidate) < T(0) && candidate_value >= value) {
-                const T gain = candidate_value - value;
-                origin = candidate;
-                value = candidate_value;
-                gradient = candidate_gradient;
-                hessian = candidate_hessian;
-                damping *= T(0.1);
-                rejected = 0;
-                accepted = true;
-                if (!(gain > tolerance)) {
-                    break; // converged
-                }
-            }
+            damping = next;
+            continue;
         }
-        if (!accepted) {
-            damping = damping > T(0) ? damping * T(10) : T(1e-3);
+        // The gain the quadratic model predicts, g . step / 2 (exact for a
+        // pure Newton step, an overestimate when damped): below a thousandth
+        // of `tolerance` means converged (the step after would gain less than
+        // `tolerance` by far), and there a step would only round F down.
+        if (!(glm::dot(gradient, step) > T(2e-3) * tolerance)) {
+            break;
+        }
+        ++iterations;
+        const Vec3<T> candidate = origin + step;
+        Vec3<T> candidate_gradient;
+        Mat3<T> candidate_hessian;
+        const T candidate_value = objective_derivatives(target, candidate, candidate_gradient, candidate_hessian);
+        if (near.distance(candidate) < T(0) && candidate_value >= value) {
+            const T gain = candidate_value - value;
+            origin = candidate;
+            value = candidate_value;
+            gradient = candidate_gradient;
+            hessian = candidate_hessian;
+            damping *= T(0.01);
+            rejected = 0;
+            if (!(gain > tolerance)) {
+                break; // converged
+            }
+        } else {
+            damping = damping > T(0) ? damping * T(10) : T(1e-2);
             if (++rejected > 40) {
                 break; // no step gains any more: F is at its maximum to rounding
             }

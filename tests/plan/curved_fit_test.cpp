@@ -55,10 +55,10 @@ TEST_CASE("curved-mirror fits: Newton with the analytic Hessian converges in few
     struct Case {
         render::CapShape shape;
         int grid;
-        double mean_steps; // at most (measured 3.4, 3.5, 8.6, 7.4)
+        double mean_steps; // at most: issue 34's 8 for the cylinder (measured 6.9, 5.3), 4 for the sphere (3.0, 2.7)
     };
-    for (const Case c : {Case{render::CapShape::Sphere, 4, 8.0}, Case{render::CapShape::Sphere, 16, 8.0},
-                         Case{render::CapShape::Cylinder, 4, 9.0}, Case{render::CapShape::Cylinder, 16, 8.0}}) {
+    for (const Case c : {Case{render::CapShape::Sphere, 4, 4.0}, Case{render::CapShape::Sphere, 16, 4.0},
+                         Case{render::CapShape::Cylinder, 4, 8.0}, Case{render::CapShape::Cylinder, 16, 8.0}}) {
         INFO(render::to_string(c.shape) << " G = " << c.grid);
         auto mirror = render::CurvedMirror::create(*render_test::showcase().mirror, c.shape, 0.3);
         REQUIRE_MESSAGE(mirror.ok(), mirror.error());

@@ -9,14 +9,22 @@
 
 namespace frustum::detail {
 
-// Pixel edge i of `count` tiles across `size` pixels: floor(i size / count),
-// in 32 bits when i size fits (a 64-bit division costs several times more).
-inline int tile_edge(int i, int size, int count) {
-    const long long product = static_cast<long long>(i) * size;
-    if (product <= std::numeric_limits<int>::max()) {
-        return static_cast<int>(product) / count;
+// Every pixel edge 0..count of `count` tiles across `size` pixels into
+// edges[]: edge i is floor(i size / count), found by carrying the remainder
+// (two integer divisions in all, not one per edge).
+inline void tile_edges(int size, int count, int* edges) {
+    const int step = size / count, extra = size % count;
+    int edge = 0, remainder = 0;
+    edges[0] = 0;
+    for (int i = 1; i <= count; ++i) {
+        edge += step;
+        remainder += extra;
+        if (remainder >= count) {
+            remainder -= count;
+            ++edge;
+        }
+        edges[i] = edge;
     }
-    return static_cast<int>(product / count);
 }
 
 struct TileGridWriter {
@@ -29,12 +37,8 @@ struct TileGridWriter {
         grid.traits_ = traits;
         grid.column_edges_px_.resize(static_cast<std::size_t>(columns) + 1);
         grid.row_edges_px_.resize(static_cast<std::size_t>(rows) + 1);
-        for (int c = 0; c <= columns; ++c) {
-            grid.column_edges_px_[static_cast<std::size_t>(c)] = tile_edge(c, width_px, columns);
-        }
-        for (int r = 0; r <= rows; ++r) {
-            grid.row_edges_px_[static_cast<std::size_t>(r)] = tile_edge(r, height_px, rows);
-        }
+        tile_edges(width_px, columns, grid.column_edges_px_.data());
+        tile_edges(height_px, rows, grid.row_edges_px_.data());
         const std::size_t tiles = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
         grid.matrices_.resize(tiles);
         grid.inverses_.resize(tiles);
