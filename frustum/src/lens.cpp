@@ -164,12 +164,15 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
         }
         for (int c = 0; c < columns; ++c) {
             const std::size_t k = static_cast<std::size_t>(c);
-            const std::size_t at[4] = {lo + k, lo + k + 1, hi + k + 1, hi + k}; // bl, br, tr, tl
             detail::LensTileInput<T> in;
-            for (int i = 0; i < 4; ++i) {
-                in.corners[i] = corners + at[i];
-                in.plane[i] = plane + at[i];
-            }
+            in.corners[0] = corners + lo + k; // bl, br, tr, tl
+            in.corners[1] = corners + lo + k + 1;
+            in.corners[2] = corners + hi + k + 1;
+            in.corners[3] = corners + hi + k;
+            in.plane[0] = plane + lo + k;
+            in.plane[1] = plane + lo + k + 1;
+            in.plane[2] = plane + hi + k + 1;
+            in.plane[3] = plane + hi + k;
             in.bottom = horizontal + lo + k;
             in.top = horizontal + hi + k;
             in.left = vertical + k;

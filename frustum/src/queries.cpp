@@ -1,6 +1,7 @@
 #include "frustum/queries.hpp"
 
 #include "frustum/detail/errors.hpp"
+#include "frustum/detail/simd4.hpp"
 #include "frustum/detail/tolerances.hpp"
 
 #include <algorithm>
@@ -138,6 +139,29 @@ Result<T> far_distance(const MatrixPair<T>& pair) {
     return std::abs(all.far->distance(*eye));
 }
 
+namespace {
+
+// to_point() for the moderate magnitudes of a camera's key points, four
+// lanes at once: the same test (|w| > tolerance |xyz|, scale-free) and xyz / w
+// in one rounding where to_point's rescaling by the largest magnitude
+// (overflow safety) rounds twice; outside [2^-60, 2^60], where squares could
+// leave float's range, to_point() itself.
+template <class T>
+Vec4<T> to_point_moderate(const Vec4<T>& h, T tolerance) {
+    const T largest = std::max(std::max(std::abs(h.x), std::abs(h.y)), std::max(std::abs(h.z), std::abs(h.w)));
+    if (!(largest > T(0x1p-60) && largest < T(0x1p60))) {
+        return to_point(h, tolerance);
+    }
+    const T length = std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
+    if (!(std::abs(h.w) > tolerance * length)) {
+        return to_point(h, tolerance); // a direction: to_point's unit form
+    }
+    const detail::V4<T> p = detail::load(h) / detail::splat(h.w);
+    return Vec4<T>(Vec3<T>(detail::store<T>(p)), T(1));
+}
+
+} // namespace
+
 template <class T>
 Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
     // key_points()' near corners and eye, the same expressions (same bits),
@@ -151,7 +175,7 @@ Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
     const Vec4<T> near_row = s * (row(m, 2) - z_near * row(m, 3)); // raw_planes(camera).near
     const Vec4<T> eye_h = glm::dot(near_row, inv[2]) > T(0) ? -inv[2] : inv[2]; // eq. 7, key_points().eye
     const T tolerance = infinity_tolerance<T>();
-    const Vec4<T> eye = to_point(eye_h, tolerance); // eye_point()
+    const Vec4<T> eye = to_point(eye_h, tolerance); // eye_point(), the same bits
     if (eye.w != T(1)) {
         return detail::error_text("near_plane_frame", "needs a perspective camera (finite eye)", "");
     }
@@ -159,7 +183,8 @@ Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
     for (int i = 0; i < 4; ++i) {
         const Vec4<T> clip = clip_corner<T>(i, depth);
         // eq. 8: C = x m0' + y m1' + z m2' + m3'
-        const Vec4<T> p = to_point(clip.x * inv[0] + clip.y * inv[1] + clip.z * inv[2] + inv[3], tolerance);
+        const Vec4<T> p =
+            to_point_moderate(clip.x * inv[0] + clip.y * inv[1] + clip.z * inv[2] + inv[3], tolerance);
         if (p.w != T(1)) {
             return detail::error<T>("near_plane_frame", "near corner is not a finite point", {{"corner", T(i + 1)}});
         }
