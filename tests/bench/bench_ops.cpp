@@ -14,6 +14,7 @@
 #include "random_cases.hpp"
 #include "reinvert.hpp"
 
+#include <frustum/detail/from_planes_points.hpp>
 #include <frustum/detail/lens_matrices.hpp>
 #include <frustum/detail/plane_intersection.hpp>
 
@@ -296,6 +297,63 @@ void InverseFromRows_Only(benchmark::State& s) {
 
 } // namespace
 
+// The baseline the lens tile had when issue 34 was filed (0.8x then): per
+// tile, §4's construction of its matrix (detail::from_planes_matrix: the four
+// side planes through the eye and two warped corners, normalized; Cramer's
+// rule for the corners; the far plane through the far points), then
+// glm::inverse. The grid's warped corners are shared (eq. 34 once per
+// corner), as lens_tiles shares them.
+template <class T>
+void LensTiles_FromPlanesReinvert(benchmark::State& s) {
+    const int g = static_cast<int>(s.range(0));
+    const auto lens = bench_lens<T>();
+    const std::size_t n = static_cast<std::size_t>(g) + 1;
+    std::vector<frustum::Vec3<T>> corners(n * n);
+    std::vector<frustum::Mat4<T>> inverses(static_cast<std::size_t>(g * g));
+    run<T>(s, [&](const Case<T>& c) {
+        const auto frame = frustum::near_plane_frame(c.camera);
+        const auto near = frustum::raw_planes(c.camera).near;
+        const auto far = frustum::far_distance(c.camera);
+        const auto near_m = frustum::near_distance(c.camera);
+        if (!frame || !far || !near_m) {
+            return false;
+        }
+        const T ratio = *far / *near_m;
+        for (std::size_t r = 0; r < n; ++r) {
+            for (std::size_t col = 0; col < n; ++col) {
+                const frustum::Vec2<T> at((T(-1) + T(2 * col) / T(g)) * frame->half_width_m,
+                                          (T(-1) + T(2 * r) / T(g)) * frame->half_height_m);
+                corners[r * n + col] = frame->point(frustum::lens_warp(at, lens));
+            }
+        }
+        const frustum::Vec3<T> eye = frame->eye;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(g); ++r) {
+            for (std::size_t col = 0; col < static_cast<std::size_t>(g); ++col) {
+                const frustum::Vec3<T> x[4] = {corners[r * n + col], corners[r * n + col + 1],
+                                               corners[(r + 1) * n + col + 1], corners[(r + 1) * n + col]};
+                const frustum::Vec3<T> inside = (x[0] + x[1] + x[2] + x[3]) / T(4);
+                const auto side = [&](const frustum::Vec3<T>& a, const frustum::Vec3<T>& b) {
+                    return Plane<T>::through(eye, a, b).facing(inside);
+                };
+                const frustum::SidePlanes<T> planes{side(x[3], x[0]), side(x[1], x[2]), side(x[0], x[1]),
+                                                    side(x[2], x[3]), near};
+                frustum::Vec3<T> far_points[4];
+                for (int i = 0; i < 4; ++i) {
+                    far_points[i] = eye + (x[i] - eye) * ratio;
+                }
+                const auto m = frustum::detail::from_planes_matrix(planes, far_points, 4, c.camera.depth());
+                if (!m) {
+                    return false;
+                }
+                inverses[r * static_cast<std::size_t>(g) + col] = glm::inverse(*m);
+            }
+        }
+        benchmark::ClobberMemory();
+        return true;
+    });
+    per_tile(s, g * g);
+}
+
 #define FRUSTUM_BENCH_OPS(T)                                                                         \
     BENCHMARK_TEMPLATE(Crop_Analytic, T);                                                            \
     BENCHMARK_TEMPLATE(crop_reinvert, T, bench::GlmInverse)->Name("Crop_Reinvert<" #T ">");          \
@@ -329,6 +387,7 @@ void InverseFromRows_Only(benchmark::State& s) {
         ->Name("CropTiles_Eigen<" #T ">")->Arg(8)->Arg(16)->Arg(32);                                 \
     BENCHMARK_TEMPLATE(LensTiles_Analytic, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                     \
     BENCHMARK_TEMPLATE(LensTiles_Grid, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                         \
+    BENCHMARK_TEMPLATE(LensTiles_FromPlanesReinvert, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);           \
     BENCHMARK_TEMPLATE(lens_tiles_reinvert, T, bench::GlmInverse)                                    \
         ->Name("LensTiles_Reinvert<" #T ">")->Arg(4)->Arg(8)->Arg(16)->Arg(32);                      \
     BENCHMARK_TEMPLATE(lens_tiles_reinvert, T, bench::EigenInverse)                                  \
