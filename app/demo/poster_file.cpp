@@ -6,11 +6,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 namespace demo {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+double cpu_seconds(std::clock_t ticks) { return static_cast<double>(ticks) / CLOCKS_PER_SEC; }
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -42,15 +45,20 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
     const double tile_mpx = double(layout.tile_width_px) * layout.tile_height_px / 1e6;
     const double frame_mpx = double(layout.width_px) * layout.height_px / 1e6;
 
+    std::clock_t last_sink_end_cpu = std::clock();
     const render::PosterRowSink sink = [&](const image::Image& rows, int) -> frustum::Status {
         const Clock::time_point begin = Clock::now();
+        const std::clock_t begin_cpu = std::clock();
         timing.render_and_read_back_s += std::chrono::duration<double>(begin - last_sink_end).count();
+        timing.render_and_read_back_cpu_s += cpu_seconds(begin_cpu - last_sink_end_cpu);
         if (auto written = (*stream)->write_rows(rows); !written) {
             return written;
         }
         thumbnail.add_rows(rows);
         last_sink_end = Clock::now();
+        last_sink_end_cpu = std::clock();
         timing.compression_s += std::chrono::duration<double>(last_sink_end - begin).count();
+        timing.compression_cpu_s += cpu_seconds(last_sink_end_cpu - begin_cpu);
         return {};
     };
     const render::PosterProgress progress = [&](int done, int total) {
@@ -62,7 +70,10 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
         job.status(std::string(render::to_string(job.effect)) + ": " +
                    progress_text(done, total, mpx_done, seconds_since(start)));
     };
-    if (auto drawn = render::render_poster(renderer, job.effect, cameras, options, layout, sink, progress); !drawn) {
+    auto drawn = job.stereo ? render::render_stereo_poster(renderer, job.effect, cameras, options, *job.stereo,
+                                                           layout, sink, progress)
+                            : render::render_poster(renderer, job.effect, cameras, options, layout, sink, progress);
+    if (!drawn) {
         return drawn.take_error();
     }
     if (auto finished = (*stream)->finish(); !finished) {

@@ -11,6 +11,7 @@
 #include <render/renderer.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -25,11 +26,15 @@ inline constexpr int kPosterThumbnailSidePx = 1024;
 
 // Where the time of a poster went, in seconds: drawing and reading back the
 // tiles (render_poster() between its sink calls), and the rows' PNG
-// compression with the thumbnail (the sink).
+// compression with the thumbnail (the sink); wall clock, and the process's
+// CPU time (std::clock(): every thread's, llvmpipe's included), which a
+// loaded machine does not stretch as it stretches the wall clock.
 struct PosterTiming {
     double render_and_read_back_s = 0.0;
     double compression_s = 0.0;
     double total_s = 0.0;
+    double render_and_read_back_cpu_s = 0.0;
+    double compression_cpu_s = 0.0;
 };
 
 struct PosterFile {
@@ -39,7 +44,10 @@ struct PosterFile {
 
 struct PosterJob {
     render::Effect effect = render::Effect::Plain;
-    render::PosterLayout layout;
+    render::PosterLayout layout; // render::stereo_poster_layout() with `stereo`
+    // Set: both eyes side by side (render::render_stereo_poster(), the
+    // cameras made for one eye's image), as a direct stereo render.
+    std::optional<render::StereoRig> stereo;
     std::string path;
     int zlib_level = 3; // image::kStreamZlibLevel
     // "mirror: tile 12/64, 3.4 Mpx/s, 41 s left": after the first second, at

@@ -139,15 +139,14 @@ frustum::Status save_screenshot(const gl::Functions& fn, const gl::FramebufferSi
 // The panel's screenshot at `scale` x the window (> 1): the frame's view,
 // effect and values drawn again as a poster, streamed to
 // "frustum-window-<scale>x.png" (without the inset, the panel and the help).
-// Stereo frames are one eye's: refused, as render refuses stereo posters.
+// A stereo frame (its cameras one eye's) gives both eyes side by side, as
+// render's stereo posters.
 frustum::Result<std::string> save_poster(const render::Renderer& renderer, const window::Frame& frame,
                                          const gl::FramebufferSize& size, int scale) {
-    if (frame.stereo) {
-        return frustum::Error{"screenshot " + std::to_string(scale) + "x: a poster has no stereo (use 1x)"};
-    }
     const int width_px = std::min(size.width_px * scale, render::kMaxPosterSidePx);
     const int height_px = std::min(size.height_px * scale, render::kMaxPosterSidePx);
-    auto layout = render::poster_layout(renderer.functions(), width_px, height_px);
+    auto layout = frame.stereo ? render::stereo_poster_layout(renderer.functions(), width_px, height_px)
+                               : render::poster_layout(renderer.functions(), width_px, height_px);
     if (!layout) {
         return layout.take_error();
     }
@@ -156,6 +155,7 @@ frustum::Result<std::string> save_poster(const render::Renderer& renderer, const
     PosterJob job;
     job.effect = frame.effect;
     job.layout = *layout;
+    job.stereo = frame.stereo;
     job.path = "frustum-window-" + std::to_string(scale) + "x.png";
     job.zlib_level = image::kStreamZlibLevel;
     auto written = write_poster(renderer, frame.cameras, options, job);

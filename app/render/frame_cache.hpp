@@ -16,6 +16,10 @@ struct FrameCache {
     // The curved mirror's patch atlas (curved_pass.cpp): planned for the
     // whole frame, so the same for every tile; up to 4096 x 4096 texels.
     std::optional<gl::OffscreenTarget> curved_atlas;
+    // The mirror effect's reflection texture with the rectangle method
+    // (mirror_pass.cpp): it spans the mirror rectangle, not the screen, so
+    // every tile samples the same one; resolved colour only.
+    std::optional<gl::OffscreenTarget> mirror_reflection;
 };
 
 } // namespace render

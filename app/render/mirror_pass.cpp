@@ -132,19 +132,33 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
         }
         view = ReflectionView{*cropped, part->width, part->height, *part};
     }
-    auto reflection = render_reflection(ctx, view, surface);
-    if (!reflection) {
-        return reflection.take_error();
-    }
-    if (draw.fog) {
-        if (auto status = fog_reflection(ctx, *reflection, view, window, draw, *draw.fog); !status) {
-            return status;
+    // The rectangle method's texture spans the mirror, not the window: the
+    // same for every tile of a poster, drawn once and kept resolved
+    // (frame_cache.hpp). The screen-aligned ones are each tile's own crop.
+    const bool shared = draw.method == MirrorMethod::Rectangle && ctx.frame_cache;
+    std::optional<gl::OffscreenTarget> own;
+    std::optional<gl::OffscreenTarget>& slot = shared ? ctx.frame_cache->mirror_reflection : own;
+    if (!slot) {
+        auto drawn = render_reflection(ctx, view, surface);
+        if (!drawn) {
+            return drawn.take_error();
         }
+        if (draw.fog) {
+            if (auto status = fog_reflection(ctx, *drawn, view, window, draw, *draw.fog); !status) {
+                return status;
+            }
+        }
+        if (shared) {
+            drawn->keep_resolved_only(); // resolves; only sampled from now on
+        } else {
+            drawn->resolve();
+        }
+        if (ctx.pass_end) {
+            ctx.pass_end("reflection");
+        }
+        slot = std::move(*drawn);
     }
-    reflection->resolve();
-    if (ctx.pass_end) {
-        ctx.pass_end("reflection");
-    }
+    const gl::OffscreenTarget* reflection = &*slot;
     frame.bind();
     begin_frame(ctx);
     SceneDraw main{*on_frame};

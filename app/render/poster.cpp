@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 // Why kMaxPosterSidePx is 65536 (2^16) per side:
 // - Float crop offsets, the binding reason: a tile's pair is the whole
@@ -106,30 +107,51 @@ frustum::Result<PosterLayout> poster_layout(const gl::Functions& fn, int width_p
     return layout;
 }
 
-frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
-                              const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
-                              const PosterProgress& progress) {
-    if (auto status = check_frame_size(layout.width_px, layout.height_px, kRender); !status) {
+namespace {
+
+// One frame of a poster: its cameras and where it lies in the poster's
+// rows (x_px, width_px; the whole height). A mono poster has one, a stereo
+// poster one per eye.
+struct PosterView {
+    const Cameras* cameras = nullptr;
+    int x_px = 0;
+    int width_px = 0;
+};
+
+frustum::Status check_tile(const PosterLayout& layout, int frame_width_px, const char* where) {
+    if (auto status = check_frame_size(layout.width_px, layout.height_px, where); !status) {
         return status;
     }
-    if (layout.tile_width_px < 1 || layout.tile_height_px < 1 || layout.tile_width_px > layout.width_px ||
+    if (layout.tile_width_px < 1 || layout.tile_height_px < 1 || layout.tile_width_px > frame_width_px ||
         layout.tile_height_px > layout.height_px) {
-        return frustum::Error{std::string(kRender) + ": tile must be 1x1 to the frame's " +
-                              size_text(layout.width_px, layout.height_px) + ", got " +
+        return frustum::Error{std::string(where) + ": tile must be 1x1 to the frame's " +
+                              size_text(frame_width_px, layout.height_px) + ", got " +
                               size_text(layout.tile_width_px, layout.tile_height_px)};
     }
+    return {};
+}
+
+// The rows of tiles of every view side by side, top to bottom.
+frustum::Status draw_poster(const Renderer& renderer, Effect effect, const std::vector<PosterView>& views,
+                            const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
+                            const PosterProgress& progress) {
     const gl::Functions& fn = renderer.functions();
     auto samples = gl::choose_samples(fn, options.msaa_samples);
     if (!samples) {
         return samples.take_error_in(kRender);
     }
-    const int columns = (layout.width_px + layout.tile_width_px - 1) / layout.tile_width_px;
     const int rows = (layout.height_px + layout.tile_height_px - 1) / layout.tile_height_px;
+    int columns = 0; // of all the views
+    for (const PosterView& view : views) {
+        columns += (view.width_px + layout.tile_width_px - 1) / layout.tile_width_px;
+    }
     const int total = columns * rows;
-    // At most four tile sizes (the last column and row are cut): a target is
-    // made again only when the size changes.
+    // A few tile sizes (the last column and row are cut): a target is made
+    // again only when the size changes.
     std::optional<gl::OffscreenTarget> target;
-    FrameCache cache; // what every tile draws the same (the curved mirror's atlas)
+    // What every tile of one view draws the same (the curved mirror's
+    // atlas, the rectangle method's reflection): one cache per view.
+    std::vector<FrameCache> caches(views.size());
     int done = 0;
     for (int row = 0; row < rows; ++row) {
         const int top_px = row * layout.tile_height_px; // from the frame's top
@@ -137,32 +159,35 @@ frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cam
         image::Image strip{layout.width_px, height_px,
                            std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) *
                                                      static_cast<std::size_t>(height_px) * 4)};
-        for (int column = 0; column < columns; ++column) {
-            const int x_px = column * layout.tile_width_px;
-            const int width_px = std::min(layout.tile_width_px, layout.width_px - x_px);
-            if (!target || target->width() != width_px || target->height() != height_px) {
-                target.reset(); // free the old one first
-                auto made = gl::OffscreenTarget::create(
-                    fn, {width_px, height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, *samples});
-                if (!made) {
-                    return made.take_error_in(kRender);
+        for (std::size_t v = 0; v < views.size(); ++v) {
+            const PosterView& view = views[v];
+            for (int x_px = 0; x_px < view.width_px; x_px += layout.tile_width_px) {
+                const int width_px = std::min(layout.tile_width_px, view.width_px - x_px);
+                if (!target || target->width() != width_px || target->height() != height_px) {
+                    target.reset(); // free the old one first
+                    auto made = gl::OffscreenTarget::create(fn, {width_px, height_px, gl::ColorStorage::Renderbuffer,
+                                                                 gl::DepthFormat::Depth24, *samples});
+                    if (!made) {
+                        return made.take_error_in(kRender);
+                    }
+                    target = std::move(*made);
                 }
-                target = std::move(*made);
-            }
-            // GL counts rows from the bottom.
-            const FrameWindow window{layout.width_px, layout.height_px,
-                                     PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
-            if (auto status = renderer.render_into(effect, cameras, options, *target, window, &cache); !status) {
-                return status;
-            }
-            auto tile = target->read_rgba8();
-            if (!tile) {
-                return tile.take_error_in(kRender);
-            }
-            copy_tile(*tile, strip, x_px);
-            ++done;
-            if (progress) {
-                progress(done, total);
+                // GL counts rows from the bottom.
+                const FrameWindow window{view.width_px, layout.height_px,
+                                         PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
+                if (auto status = renderer.render_into(effect, *view.cameras, options, *target, window, &caches[v]);
+                    !status) {
+                    return status;
+                }
+                auto tile = target->read_rgba8();
+                if (!tile) {
+                    return tile.take_error_in(kRender);
+                }
+                copy_tile(*tile, strip, view.x_px + x_px);
+                ++done;
+                if (progress) {
+                    progress(done, total);
+                }
             }
         }
         if (auto status = sink(strip, top_px); !status) {
@@ -170,6 +195,56 @@ frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cam
         }
     }
     return {};
+}
+
+std::string odd_width(const char* where, int width_px) {
+    return std::string(where) + ": the width must be even (two eyes side by side), got " + std::to_string(width_px) +
+           " px";
+}
+
+} // namespace
+
+frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+                              const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
+                              const PosterProgress& progress) {
+    if (auto status = check_tile(layout, layout.width_px, kRender); !status) {
+        return status;
+    }
+    return draw_poster(renderer, effect, {PosterView{&cameras, 0, layout.width_px}}, options, layout, sink, progress);
+}
+
+frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int width_px, int height_px,
+                                                   std::optional<std::pair<int, int>> requested_tile_px) {
+    constexpr const char* kStereoLayout = "render::stereo_poster_layout()";
+    if (width_px % 2 != 0) {
+        return frustum::Error{odd_width(kStereoLayout, width_px)};
+    }
+    auto layout = poster_layout(fn, width_px, height_px, requested_tile_px);
+    if (!layout) {
+        return layout.take_error();
+    }
+    layout->tile_width_px = std::min(layout->tile_width_px, width_px / 2);
+    return layout;
+}
+
+frustum::Status render_stereo_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+                                     const RenderOptions& options, const StereoRig& rig, const PosterLayout& layout,
+                                     const PosterRowSink& sink, const PosterProgress& progress) {
+    constexpr const char* kStereo = "render::render_stereo_poster()";
+    if (layout.width_px % 2 != 0) {
+        return frustum::Error{odd_width(kStereo, layout.width_px)};
+    }
+    const int eye_width_px = layout.width_px / 2;
+    if (auto status = check_tile(layout, eye_width_px, kStereo); !status) {
+        return status;
+    }
+    auto eyes = stereo_cameras(cameras, rig);
+    if (!eyes) {
+        return frustum::Error{eyes.error()};
+    }
+    return draw_poster(renderer, effect,
+                       {PosterView{&eyes->left, 0, eye_width_px}, PosterView{&eyes->right, eye_width_px, eye_width_px}},
+                       options, layout, sink, progress);
 }
 
 } // namespace render

@@ -8,6 +8,7 @@
 // parameter shows.
 #pragma once
 
+#include "plan/stereo.hpp"
 #include "render/renderer.hpp"
 
 #include <frustum/result.hpp>
@@ -65,5 +66,27 @@ using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
 frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout,
                               const PosterRowSink& sink, const PosterProgress& progress = {});
+
+// A stereo poster's layout: poster_layout() of the whole layout (both eyes:
+// the row budget counts the whole width), the tile width then cut to one
+// eye's (width_px / 2), so that no tile straddles the eyes. Errors: the
+// poster_layout() ones, an odd width, e.g.
+// "render::stereo_poster_layout(): the width must be even (two eyes side by side), got 9001 px".
+frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int width_px, int height_px,
+                                                   std::optional<std::pair<int, int>> requested_tile_px = {});
+
+// Stereo as a poster, in the layout render_stereo() writes: the left eye's
+// frame on the left half of the layout.width_px x layout.height_px image,
+// the right eye's on the right half, each eye's frame (width_px / 2 x
+// height_px) a poster of crop tiles of that eye's cameras (stereo_cameras()
+// of `cameras`, which are made for one eye's image, as for
+// render_stereo()), every effect planned once per eye for the eye's whole
+// frame. Each row of tiles is the left eye's tiles then the right eye's,
+// handed to `sink` as one full-width row; progress counts both eyes'
+// tiles. Errors: render_poster()'s, an odd width, a tile wider than one
+// eye, the stereo_cameras() ones.
+frustum::Status render_stereo_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+                                     const RenderOptions& options, const StereoRig& rig, const PosterLayout& layout,
+                                     const PosterRowSink& sink, const PosterProgress& progress = {});
 
 } // namespace render

@@ -4,9 +4,12 @@
 // cut; and the tile layout follows its stated rule.
 #include "render_test_support.hpp"
 
+#include <plan/effect_params.hpp>
 #include <render/poster.hpp>
+#include <render/stereo_render.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,11 +18,14 @@ namespace {
 constexpr int kPosterWidthPx = 512;
 constexpr int kPosterHeightPx = 384;
 
-// The poster stitched from the rows render_poster() hands over, checking
-// that they come top to bottom, each a whole row of tiles.
+// The poster stitched from the rows render_poster() (with `rig`:
+// render_stereo_poster()) hands over, checking that they come top to
+// bottom, each a whole row of tiles, and that progress counts every tile
+// (with a rig: each eye's columns).
 image::Image render_poster_image(const render_test::RenderEnvironment& r, render::Effect effect,
                                  const render::Cameras& cameras, const render::RenderOptions& o,
-                                 const render::PosterLayout& layout) {
+                                 const render::PosterLayout& layout,
+                                 const std::optional<render::StereoRig>& rig = std::nullopt) {
     image::Image out{layout.width_px, layout.height_px,
                      std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) * layout.height_px * 4)};
     int next_top_px = 0, last_done = 0;
@@ -32,15 +38,30 @@ image::Image render_poster_image(const render_test::RenderEnvironment& r, render
         next_top_px = top_px + rows.height;
         return {};
     };
+    const int view_width_px = rig ? layout.width_px / 2 : layout.width_px;
+    const int columns = (rig ? 2 : 1) * ((view_width_px + layout.tile_width_px - 1) / layout.tile_width_px);
     const auto progress = [&](int done, int total) {
         CHECK(done == last_done + 1);
-        CHECK(total == ((layout.width_px + layout.tile_width_px - 1) / layout.tile_width_px) *
-                           ((layout.height_px + layout.tile_height_px - 1) / layout.tile_height_px));
+        CHECK(total == columns * ((layout.height_px + layout.tile_height_px - 1) / layout.tile_height_px));
         last_done = done;
     };
-    const auto status = render::render_poster(*r.renderer, effect, cameras, o, layout, sink, progress);
+    const auto status =
+        rig ? render::render_stereo_poster(*r.renderer, effect, cameras, o, *rig, layout, sink, progress)
+            : render::render_poster(*r.renderer, effect, cameras, o, layout, sink, progress);
     REQUIRE_MESSAGE(status.ok(), status.error());
     CHECK(next_top_px == layout.height_px);
+    return out;
+}
+
+// Columns [x_px, x_px + width_px) of `picture`.
+image::Image columns_of(const image::Image& picture, int x_px, int width_px) {
+    image::Image out{width_px, picture.height,
+                     std::vector<std::uint8_t>(static_cast<std::size_t>(width_px) * picture.height * 4)};
+    for (int y = 0; y < picture.height; ++y) {
+        std::copy_n(picture.rgba.begin() + (static_cast<std::ptrdiff_t>(y) * picture.width + x_px) * 4,
+                    static_cast<std::ptrdiff_t>(width_px) * 4,
+                    out.rgba.begin() + static_cast<std::ptrdiff_t>(y) * width_px * 4);
+    }
     return out;
 }
 
@@ -115,6 +136,114 @@ TEST_CASE("a poster in crop tiles equals the frame rendered whole, every effect"
                                               std::to_string(tile.first),
                                           direct, poster);
             }
+        }
+    }
+}
+
+TEST_CASE("a stereo poster in crop tiles of each eye equals the direct stereo render, every effect") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    // The cameras are one eye's (256 x 384), as for render_stereo().
+    const int eye_width_px = kPosterWidthPx / 2;
+    const auto cameras = render_test::showcase_cameras(eye_width_px, kPosterHeightPx);
+    std::vector<PosterCase> cases;
+    for (render::Effect effect : render::kAllEffects) {
+        cases.push_back({std::string(render::to_string(effect)), effect});
+    }
+    cases.push_back({"mirror, rectangle method", render::Effect::Mirror,
+                     [](render::RenderOptions& o) { o.mirror_method = render::MirrorMethod::Rectangle; }});
+    for (const PosterCase& c : cases) {
+        INFO(c.name);
+        auto o = render_test::options(kPosterWidthPx, kPosterHeightPx);
+        if (c.adjust) {
+            c.adjust(o);
+        }
+        o.stereo = true;
+        const auto rig = render::stereo_rig(o, cameras.main.pair, render_test::showcase());
+        REQUIRE(rig.has_value());
+        auto direct = render::render_stereo(*r->renderer, c.effect, cameras, o, *rig);
+        REQUIRE_MESSAGE(direct.ok(), direct.error());
+        // The eyes differ (a poster drawing one eye's cameras twice would
+        // not): the halves of the direct image are not the same picture.
+        const image::Image left = columns_of(*direct, 0, eye_width_px);
+        const image::Image right = columns_of(*direct, eye_width_px, eye_width_px);
+        const auto eyes = image::compare(left, right, 2);
+        REQUIRE_MESSAGE(eyes.ok(), eyes.error());
+        CHECK(eyes->pixels_over > 1000);
+        // 128x96 divides an eye (2x4 tiles each); 200x150 leaves each eye a
+        // last column 56 wide and a last row 84 high.
+        for (const auto& tile : {std::pair{128, 96}, std::pair{200, 150}}) {
+            const render::PosterLayout layout{kPosterWidthPx, kPosterHeightPx, tile.first, tile.second};
+            const image::Image poster = render_poster_image(*r, c.effect, cameras, o, layout, rig);
+            // The mono case's tolerance (above), for the two eyes together.
+            constexpr int kEdgePixels = 16;
+            const auto diff = image::compare(*direct, poster, 2);
+            REQUIRE_MESSAGE(diff.ok(), diff.error());
+            MESSAGE("stereo " << c.name << ", " << tile.first << "x" << tile.second << " tiles vs direct: max "
+                              << diff->max_abs << ", " << diff->pixels_over << " pixels over " << diff->tolerance);
+            CHECK(diff->pixels_over <= kEdgePixels);
+            if (diff->pixels_over > kEdgePixels) {
+                render_test::save_failure("poster-stereo-" + std::string(render::to_string(c.effect)) + "-" +
+                                              std::to_string(tile.first),
+                                          *direct, poster);
+            }
+        }
+    }
+}
+
+TEST_CASE("render_stereo_poster(): an odd width, or a tile wider than one eye, is refused") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    const auto cameras = render_test::showcase_cameras(32, 48);
+    const render::StereoRig rig;
+    const auto ignore = [](const image::Image&, int) -> frustum::Status { return {}; };
+    const auto options = render_test::options(64, 48);
+    const auto odd = render::render_stereo_poster(*r->renderer, render::Effect::Plain, cameras, options, rig,
+                                                  {65, 48, 16, 16}, ignore);
+    REQUIRE_FALSE(odd.ok());
+    CHECK(odd.error() == "render::render_stereo_poster(): the width must be even (two eyes side by side), got 65 px");
+    const auto wide = render::render_stereo_poster(*r->renderer, render::Effect::Plain, cameras, options, rig,
+                                                   {64, 48, 33, 16}, ignore);
+    REQUIRE_FALSE(wide.ok());
+    CHECK(wide.error() == "render::render_stereo_poster(): tile must be 1x1 to the frame's 32x48, got 33x16");
+    // The layout cuts the tile to one eye.
+    auto layout = render::stereo_poster_layout(r->env->fn, 64, 48, std::pair{64, 16});
+    REQUIRE_MESSAGE(layout.ok(), layout.error());
+    CHECK(layout->tile_width_px == 32);
+    CHECK(layout->tile_height_px == 16);
+    auto odd_layout = render::stereo_poster_layout(r->env->fn, 9001, 100);
+    REQUIRE_FALSE(odd_layout.ok());
+    CHECK(odd_layout.error() ==
+          "render::stereo_poster_layout(): the width must be even (two eyes side by side), got 9001 px");
+}
+
+TEST_CASE("a poster draws the rectangle method's reflection once, not once per tile") {
+    auto r = render_test::make_any_renderer();
+    if (!r) {
+        return;
+    }
+    const auto cameras = render_test::showcase_cameras(kPosterWidthPx, kPosterHeightPx);
+    for (const render::MirrorMethod method : {render::MirrorMethod::Rectangle, render::MirrorMethod::Oblique}) {
+        auto o = render_test::options(kPosterWidthPx, kPosterHeightPx);
+        o.mirror_method = method;
+        int reflections = 0, tiles = 0;
+        o.pass_end = [&](const char* pass) {
+            reflections += std::string(pass) == "reflection";
+            tiles += std::string(pass) == "main view";
+        };
+        // 4x4 tiles of 128x96.
+        render_poster_image(*r, render::Effect::Mirror, cameras, o, {kPosterWidthPx, kPosterHeightPx, 128, 96});
+        CHECK(tiles == 16);
+        if (method == render::MirrorMethod::Rectangle) {
+            CHECK(reflections == 1); // the texture spans the mirror: every tile samples it
+        } else {
+            // Screen-aligned: each tile the mirror's rectangle meets draws its own crop of it.
+            CHECK(reflections > 1);
+            CHECK(reflections < 16);
         }
     }
 }

@@ -125,12 +125,45 @@ TEST_CASE("poster: --size above 65536, a bad --poster-tile and --stereo above on
     if (rob::no_gl()) {
         return;
     }
-    const support::Outcome stereo = demo({"render", "--effect", "plain", "--out", out, "--size", "9000x64", "--stereo"});
-    CHECK(stereo.exit_status == 2);
-    CHECK(stereo.err ==
-          "frustum-demo: error: --stereo draws both eyes into one target: --size 9000x64 would be a poster, which has "
-          "no stereo; stereo sizes go up to 8192x8192\n");
+    // A stereo poster needs an even width, as a direct stereo render does.
+    const support::Outcome odd = demo({"render", "--effect", "plain", "--out", out, "--size", "9001x64", "--stereo"});
+    CHECK(odd.exit_status == 2);
+    CHECK(odd.err ==
+          "frustum-demo: error: --stereo needs an even width (two eyes side by side), got --size 9001x64\n");
     CHECK_FALSE(std::filesystem::exists(out));
+}
+
+TEST_CASE("poster: render --stereo --size 9000x64 draws both eyes as posters, side by side as a direct stereo render") {
+    if (rob::no_gl()) {
+        return;
+    }
+    support::TempDir dir;
+    const std::string out = (dir / "poster").string();
+    const support::Outcome outcome = demo(
+        {"render", "--effect", "plain", "--size", "9000x64", "--stereo", "--out", out, "--verbose"});
+    REQUIRE_MESSAGE(outcome.exit_status == 0, outcome.err);
+    // The tiles are cut to one eye (4500 px): none straddles the two.
+    CHECK(outcome.err.find("frustum-demo: poster: 9000x64 in tiles of 4096x64, streamed to PNG, each eye 4500x64\n") !=
+          std::string::npos);
+    auto poster = image::read_png(out + "/plain.png");
+    REQUIRE_MESSAGE(poster.ok(), poster.error());
+    CHECK(poster->width == 9000);
+    CHECK(poster->height == 64);
+    // Against a direct stereo render at half the size (each eye 2250x32, the
+    // same aspect): the mono check's bounds (above).
+    const image::Image direct = render_plain(dir, "direct", "4500x32", {"--stereo"});
+    const auto diff = image::compare(half(*poster), direct, 12);
+    REQUIRE(diff.ok());
+    MESSAGE("stereo 9000x64 halved vs direct 4500x32: mean " << diff->mean_abs << " LSB, "
+                                                             << 100.0 * diff->fraction_over() << "% over 12 LSB");
+    CHECK(diff->mean_abs <= 1.0);
+    CHECK(diff->fraction_over() <= 0.01);
+    // The bounds see the layout: one camera over the whole width (a mono
+    // poster, what --stereo ignored would give) fails them.
+    const image::Image mono = render_plain(dir, "mono", "4500x32");
+    const auto wrong = image::compare(half(*poster), mono, 12);
+    REQUIRE(wrong.ok());
+    CHECK(wrong->fraction_over() > 0.01);
 }
 
 TEST_CASE("poster: the --poster-tile value is the tiling used, and the file appears only when complete") {
