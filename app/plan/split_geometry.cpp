@@ -6,7 +6,8 @@ namespace render {
 
 SplitGeometry SplitGeometry::build(const WorldGeometry& placed, float max_edge_m) {
     SplitGeometry out;
-    out.split = subdivide(placed, max_edge_m);
+    out.max_edge_m = edge_within_budget(placed, max_edge_m);
+    out.split = subdivide(placed, out.max_edge_m);
     std::size_t count = 0;
     for (const WorldPrimitive& p : out.split.primitives) {
         count += p.vertices.size();

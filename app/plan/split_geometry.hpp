@@ -21,7 +21,11 @@ struct SplitGeometry {
     std::vector<WorldVertex> vertices;  // every primitive's vertices, in primitive order
     std::vector<std::uint32_t> bases;   // bases[i]: split.primitives[i]'s first vertex in `vertices`
 
-    // `placed` split to max_edge_m (<= 0: not split) and gathered.
+    float max_edge_m = 0.0f;            // the edge split to: the one asked for, or longer (budget)
+
+    // `placed` split to max_edge_m (<= 0: not split), or to the longer edge
+    // that keeps it within kMaxSplitTriangles (edge_within_budget()), and
+    // gathered.
     static SplitGeometry build(const WorldGeometry& placed, float max_edge_m);
 };
 

@@ -127,14 +127,65 @@ WorldGeometry WorldGeometry::from_scene(const scene::Scene& scene) {
     return in_object_space(scene).placed(scene.instances);
 }
 
+namespace {
+
+int subdivision(float longest_m, float max_edge_m) {
+    const float ratio = std::ceil(longest_m / max_edge_m);
+    return static_cast<int>(std::clamp(ratio, 1.0f, static_cast<float>(kMaxSubdivision)));
+}
+
+std::size_t split_count(const std::vector<float>& longest_m, const std::vector<std::size_t>& triangles,
+                        float max_edge_m, bool& any_split) {
+    std::size_t total = 0;
+    any_split = false;
+    for (std::size_t i = 0; i < longest_m.size(); ++i) {
+        const auto n = static_cast<std::size_t>(max_edge_m > 0.0f ? subdivision(longest_m[i], max_edge_m) : 1);
+        any_split = any_split || n > 1;
+        total += triangles[i] * n * n;
+    }
+    return total;
+}
+
+void edges_and_counts(const WorldGeometry& geometry, std::vector<float>& longest_m,
+                      std::vector<std::size_t>& triangles) {
+    for (const WorldPrimitive& p : geometry.primitives) {
+        longest_m.push_back(longest_edge_m(p));
+        triangles.push_back(p.indices.size() / 3);
+    }
+}
+
+} // namespace
+
+std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m) {
+    std::vector<float> longest_m;
+    std::vector<std::size_t> triangles;
+    edges_and_counts(geometry, longest_m, triangles);
+    bool any_split = false;
+    return split_count(longest_m, triangles, max_edge_m, any_split);
+}
+
+float edge_within_budget(const WorldGeometry& geometry, float max_edge_m, std::size_t max_triangles) {
+    if (!(max_edge_m > 0.0f)) {
+        return max_edge_m;
+    }
+    std::vector<float> longest_m;
+    std::vector<std::size_t> triangles;
+    edges_and_counts(geometry, longest_m, triangles);
+    float edge_m = max_edge_m;
+    bool any_split = false;
+    while (split_count(longest_m, triangles, edge_m, any_split) > max_triangles && any_split) {
+        edge_m *= 2.0f;
+    }
+    return edge_m;
+}
+
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m) {
     if (!(max_edge_m > 0.0f)) {
         return geometry;
     }
     WorldGeometry out;
     for (const WorldPrimitive& p : geometry.primitives) {
-        const float ratio = std::ceil(longest_edge_m(p) / max_edge_m);
-        const int n = static_cast<int>(std::clamp(ratio, 1.0f, static_cast<float>(kMaxSubdivision)));
+        const int n = subdivision(longest_edge_m(p), max_edge_m);
         if (n == 1) {
             out.primitives.push_back(p);
             continue;

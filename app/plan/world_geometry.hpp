@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -55,5 +56,23 @@ struct WorldGeometry {
 // edges split alike, so the surface stays watertight. max_edge_m <= 0: a copy.
 inline constexpr int kMaxSubdivision = 64;
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m);
+
+// The most triangles a split may hold (SplitGeometry): 2^20, about 150 MB
+// for the split copy, the gathered vertices and the GPU's (48-byte
+// vertices, (n + 1)(n + 2) / 2 of them per n x n split triangle). With one n
+// per primitive a large scene's long primitives (a city block's pavement, a
+// ground plane) would split everything on them 64 x 64 times: 400 000
+// triangles became 1.6e9 (24 GB) at the 0.25 m default edge.
+inline constexpr std::size_t kMaxSplitTriangles = std::size_t(1) << 20;
+
+// The triangles subdivide(geometry, max_edge_m) gives.
+std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m);
+
+// max_edge_m, doubled until subdivide() gives at most max_triangles
+// triangles (n only falls as the edge grows), or until no primitive is
+// split (n = 1 everywhere: the geometry's own count, kept even when that is
+// over). max_edge_m <= 0 (no split) is returned as is.
+float edge_within_budget(const WorldGeometry& geometry, float max_edge_m,
+                         std::size_t max_triangles = kMaxSplitTriangles);
 
 } // namespace render

@@ -1,0 +1,78 @@
+// The non-affine split within a triangle budget (plan/world_geometry.hpp,
+// issue 36's large scene): one n per primitive splits everything on a long
+// primitive 64 x 64 times, so the edge grows (doubling) until the split
+// holds at most kMaxSplitTriangles; the showcase, far under it, keeps the
+// edge it asks for.
+#include "showcase.hpp"
+
+#include <plan/split_geometry.hpp>
+#include <plan/world_geometry.hpp>
+
+#include <cstddef>
+
+namespace {
+
+// One primitive: a rows x rows grid of quads (2 triangles each) over a
+// side_m x side_m square, so its longest edge is a quad's diagonal while
+// the primitive spans side_m.
+render::WorldPrimitive grid(int rows, float side_m) {
+    render::WorldPrimitive p;
+    const float step = side_m / static_cast<float>(rows);
+    for (int j = 0; j <= rows; ++j) {
+        for (int i = 0; i <= rows; ++i) {
+            render::WorldVertex v;
+            v.position = glm::vec3(static_cast<float>(i) * step, 0.0f, static_cast<float>(j) * step);
+            p.vertices.push_back(v);
+        }
+    }
+    const auto at = [rows](int i, int j) { return static_cast<std::uint32_t>(j * (rows + 1) + i); };
+    for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < rows; ++i) {
+            p.indices.insert(p.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            p.indices.insert(p.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    return p;
+}
+
+} // namespace
+
+TEST_SUITE("plan") {
+
+TEST_CASE("the showcase's non-affine split keeps the 0.25 m edge: it is within the triangle budget") {
+    const auto world = render::WorldGeometry::from_scene(render_test::showcase());
+    const std::size_t count = render::split_triangle_count(world, 0.25f);
+    MESSAGE("showcase split at 0.25 m: " << count << " triangles (budget " << render::kMaxSplitTriangles << ")");
+    CHECK(count <= render::kMaxSplitTriangles);
+    CHECK(render::edge_within_budget(world, 0.25f) == 0.25f);
+    const auto split = render::SplitGeometry::build(world, 0.25f);
+    CHECK(split.max_edge_m == 0.25f);
+}
+
+TEST_CASE("a long primitive's split grows the edge until it fits the budget, and no further") {
+    render::WorldGeometry world;
+    // 100 x 100 quads over 400 m: 20000 triangles with 5.7 m diagonals; at
+    // 0.25 m each would split 23 x 23 times (10.6 million triangles).
+    world.primitives.push_back(grid(100, 400.0f));
+    REQUIRE(render::split_triangle_count(world, 0.25f) > render::kMaxSplitTriangles);
+    const float edge_m = render::edge_within_budget(world, 0.25f);
+    const std::size_t count = render::split_triangle_count(world, edge_m);
+    MESSAGE("edge " << edge_m << " m: " << count << " triangles");
+    CHECK(count <= render::kMaxSplitTriangles);
+    CHECK(render::split_triangle_count(world, edge_m / 2.0f) > render::kMaxSplitTriangles); // the first that fits
+    const auto split = render::SplitGeometry::build(world, 0.25f);
+    CHECK(split.max_edge_m == edge_m);
+    std::size_t built = 0;
+    for (const render::WorldPrimitive& p : split.split.primitives) {
+        built += p.indices.size() / 3;
+    }
+    CHECK(built == count);
+    // A small budget: once nothing is split the geometry's own count stays,
+    // even above it.
+    const float unsplit_m = render::edge_within_budget(world, 0.25f, 1000);
+    CHECK(render::split_triangle_count(world, unsplit_m) == 20000);
+    // No split asked for: none.
+    CHECK(render::edge_within_budget(world, 0.0f) == 0.0f);
+}
+
+} // TEST_SUITE
