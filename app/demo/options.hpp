@@ -16,6 +16,7 @@
 #include <gl/offscreen_target.hpp>
 #include <gl/window_input.hpp>
 #include <render/depth_policy.hpp>
+#include <render/session.hpp>
 #include <plan/effect.hpp>
 #include <scene/load_gltf.hpp>
 
@@ -30,15 +31,9 @@ namespace demo {
 // What the options set, for every command (each reads the fields of the
 // options it declares). The defaults are those of render; defaults(command)
 // gives each command's own.
-struct Settings : render::EffectParams {
-    // The session: every command.
-    std::string scene_path;            // --scene; default: FRUSTUM_ASSETS_DIR/showcase.gltf
-    std::optional<std::string> camera; // --camera NAME|INDEX; default "main", else camera 0
-    int width_px = 640, height_px = 360; // --size: the image (window: its size in screen coordinates)
-    bool verbose = false;              // --verbose: the GL context and its KHR_debug messages
-    // --max-memory-mb (render: also bounds the run's output images),
-    // --max-nodes, --max-depth, --max-drawn-vertices.
-    scene::Budget budget;
+// The session's values (every command: --scene, --camera, --size,
+// --verbose, the --max-* budget) are render::SessionSettings'.
+struct Settings : render::EffectParams, render::SessionSettings {
     // Offscreen commands (render and the reports).
     std::optional<gl::Backend> backend; // --backend; unset: EGL, falling back to OSMesa with a note
     render::DepthPath depth = render::DepthPath::ClipControlWhenAvailable; // --depth
@@ -94,6 +89,19 @@ struct HelpRequest {};
 // with one line naming the value; an option of another command "does not
 // apply to" this one; checks that need several options are the caller's.
 std::variant<HelpRequest, Settings, Failure> parse_options(Command command, const std::vector<std::string>& args);
+
+// parse_options()'s usage failure or --help as a command's own parse result
+// (`Parsed`, a variant holding both); empty when it gave settings.
+template <class Parsed>
+std::optional<Parsed> failure_or_help(const std::variant<HelpRequest, Settings, Failure>& parsed) {
+    if (const auto* failure = std::get_if<Failure>(&parsed)) {
+        return Parsed{*failure};
+    }
+    if (std::holds_alternative<HelpRequest>(parsed)) {
+        return Parsed{HelpRequest{}};
+    }
+    return std::nullopt;
+}
 
 // The --help lines of `command`'s rows, "  --slit M            ...": the
 // effect rows when `effect_rows`, the others otherwise.

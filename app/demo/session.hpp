@@ -14,6 +14,7 @@
 #include <plan/camera.hpp>
 #include <plan/effect_params.hpp>
 #include <render/renderer.hpp>
+#include <render/session.hpp>
 #include <scene/scene.hpp>
 
 #include <functional>
@@ -32,7 +33,7 @@ struct Reporter {
     std::function<void(std::string_view)> status = {};
 };
 
-using ContextMaker = std::function<frustum::Result<std::unique_ptr<gl::Context>>()>;
+using ContextMaker = render::ContextMaker;
 
 // How a command opens its session.
 struct OpenOptions {
@@ -43,33 +44,22 @@ struct OpenOptions {
     ContextMaker make_context;   // empty: make_context() (offscreen, the one fallback)
 };
 
-// Members die in reverse: the renderer, then the table its objects point
-// to, then the context; the scene outlives them all. A command's own
-// session derives from it, so its GL objects die before the context.
-struct Session {
-    scene::Scene scene;
-    int camera_index = -1;
-    std::optional<render::Cameras> cameras; // at --size (the window makes its own, per framebuffer size)
-    render::ResolvedEffects effects;        // the effect values with what the scene derives (resolve_effects())
-    std::unique_ptr<gl::Context> context;
-    std::unique_ptr<gl::Functions> fn; // stable address: GL objects point to it
-    std::optional<render::Renderer> renderer;
-
-    // The one way every command opens it: the scene (--scene within the
-    // --max-* budget) and its --camera -> the cameras -> the effect values
-    // resolved for the scene (the mirror placed; a note says where) -> the
-    // context -> its functions -> the renderer (which draws the placed
-    // mirror). With --verbose a note names the context.
+// render::Session (render/session.hpp, which the web page opens too) with
+// frustum-demo's settings, notes and exit statuses. A command's own session
+// derives from it, so its GL objects die before the context.
+struct Session : render::Session {
+    // The one way every command opens it: render::Session::open() with the
+    // settings' scene, camera, size and effect values, the context
+    // how.make_context makes (empty: make_context()), notes to
+    // reporter.note; a usage failure for an unknown --camera or an explicit
+    // value the scene cannot take (how.refuse_explicit), else a runtime one.
     std::optional<Failure> open(const Settings& settings, const Reporter& reporter, const OpenOptions& how = {});
 };
 
 // --scene within the --max-* budget and its --camera, as every command
-// loads them (and the window's panel a new scene file): an unreadable scene
-// is a runtime failure, an unknown --camera a usage error.
-struct LoadedScene {
-    scene::Scene scene;
-    int camera_index = -1;
-};
+// loads them (and the window's panel a new scene file): render::load_scene(),
+// an unreadable scene a runtime failure, an unknown --camera a usage error.
+using LoadedScene = render::LoadedScene;
 std::variant<LoadedScene, Failure> load_scene(const Settings& settings);
 
 // The offscreen context: exactly --backend when given, otherwise EGL, then

@@ -18,6 +18,7 @@
 #include <window/frame_clock.hpp>
 #include <window/fragment_counter.hpp>
 #include <window/frame_painter.hpp>
+#include <window/frame_step.hpp>
 #include <window/gpu_timer.hpp>
 #include <window/imgui_layer.hpp>
 #include <window/live_numbers.hpp>
@@ -265,14 +266,16 @@ void outline(const render::PixelRect& rect, int height_px) {
 }
 
 // One window's frame loop: what it keeps between frames, and step(), one
-// pass of it: input -> cameras -> controls -> mirror pose -> frame -> paint
-// -> panel and help -> screenshot, swap, title.
+// pass of it: input -> cameras -> controls -> mirror pose -> frame (the
+// window::FrameStep the web page runs too) -> paint -> panel and help ->
+// screenshot, swap, title.
 class WindowLoop {
 public:
     WindowLoop(const WindowRequest& request, const std::vector<std::string>& args, WindowSession& session,
                const std::function<void(std::string_view)>& note)
-        : request_(request), s_(session), note_(note), reporter_{note, note}, controls_(control_scene_),
-          state_(initial_state(request, session)), settings_(request), panel_(args, request),
+        : request_(request), s_(session), note_(note), reporter_{note, note},
+          step_(session, initial_state(request, session)), state_(step_.state()), settings_(request),
+          panel_(args, request),
           titled_effect_(state_.effect), size_(session.window->framebuffer_size()), shown_effect_(state_.effect),
           last_frame_(std::chrono::steady_clock::now()) {
         derive_from_scene();
@@ -284,11 +287,10 @@ public:
     const WindowRun& run() const { return run_; }
 
 private:
-    // What is derived from the scene: at start-up and for each scene file the panel loads.
+    // The panel's camera names: at start-up and for each scene file the panel loads.
     void derive_from_scene();
     // This pass's events (a --keys key, the panel's share taken out); false: nothing to draw (minimized).
     bool read_input(std::vector<gl::InputEvent>& events);
-    std::optional<Failure> move_mirror();
     // Paints the frame; a frame not drawn for this scene or camera keeps the previous effect and says why.
     std::optional<Failure> paint(window::Frame& frame, bool& painted, double& paint_ms);
     std::optional<Failure> draw_overlay(const window::Frame& frame, const std::vector<std::string>& help,
@@ -300,21 +302,16 @@ private:
     WindowSession& s_;
     std::function<void(std::string_view)> note_;
     Reporter reporter_;
-    std::vector<int> attachments_;          // what moves with the mirror
-    window::OrbitProjection projection_;    // the orbit camera's
     std::vector<std::string> camera_names_; // --camera in the panel: a name, else the index
-    window::ControlScene control_scene_;
-    window::Controls controls_;
     std::optional<OpenedScene> opened_scene_; // another --scene the panel asked for, loaded by its check
-    window::ViewerState state_;
+    window::FrameStep step_;
+    window::ViewerState& state_; // the step's
     Settings settings_; // what the panel last applied
     WindowPanel panel_;
-    window::MirrorPose applied_pose_;
     window::FrameClock clock_;
     std::optional<double> frame_ms_;
     render::Effect titled_effect_;
     gl::FramebufferSize size_;
-    std::optional<render::Cameras> cameras_;
     WindowRun run_;
     render::Effect shown_effect_;       // the last effect drawn
     std::optional<std::string> notice_; // why an effect was refused, in the overlay
@@ -325,15 +322,11 @@ private:
 };
 
 void WindowLoop::derive_from_scene() {
-    attachments_ = window::mirror_attachments(s_.scene);
-    projection_ = window::orbit_projection(s_.scene, s_.camera_index);
     camera_names_.clear();
     for (std::size_t i = 0; i < s_.scene.cameras.size(); ++i) {
         const std::string& name = s_.scene.cameras[i].name;
         camera_names_.push_back(name.empty() ? std::to_string(i) : name);
     }
-    control_scene_ = window::control_scene(s_.scene);
-    controls_ = window::Controls(control_scene_);
 }
 
 bool WindowLoop::read_input(std::vector<gl::InputEvent>& events) {
@@ -346,7 +339,6 @@ bool WindowLoop::read_input(std::vector<gl::InputEvent>& events) {
     for (const gl::InputEvent& event : events) {
         if (const auto* resized = std::get_if<gl::FramebufferResized>(&event)) {
             size_ = {resized->width_px, resized->height_px};
-            cameras_.reset();
         }
     }
     if (size_.width_px < 1 || size_.height_px < 1) {
@@ -355,17 +347,6 @@ bool WindowLoop::read_input(std::vector<gl::InputEvent>& events) {
     // The panel takes the mouse while the pointer is over it.
     events = s_.imgui->feed(std::move(events), state_.show_panel);
     return true;
-}
-
-std::optional<Failure> WindowLoop::move_mirror() {
-    if (s_.scene.mirror && state_.mirror != applied_pose_) {
-        if (auto moved = s_.renderer->move_mirror(window::mirror_motion(*s_.scene.mirror, state_.mirror), attachments_);
-            !moved) {
-            return runtime(moved.error());
-        }
-        applied_pose_ = state_.mirror;
-    }
-    return std::nullopt;
 }
 
 std::optional<Failure> WindowLoop::paint(window::Frame& frame, bool& painted, double& paint_ms) {
@@ -433,7 +414,7 @@ std::optional<Failure> WindowLoop::draw_overlay(const window::Frame& frame, cons
         view.fragments_unavailable = s_.fragments->unavailable_reason();
         view.paint_cpu_ms = paint_ms;
         view.notice = notice_;
-        view.mirror_size_m = control_scene_.mirror_size_m;
+        view.mirror_size_m = step_.control_scene().mirror_size_m;
         view.scene_radius_m = window::bounds_radius(s_.scene.world_bounds);
         view.camera_names = camera_names_;
         view.check = [this](const Settings& next) -> std::optional<std::string> {
@@ -470,10 +451,7 @@ std::optional<Failure> WindowLoop::take_panel_outcome(PanelOutcome outcome) {
         take_scene(s_, std::move(*opened_scene_), reporter_);
         opened_scene_.reset();
         derive_from_scene();
-        state_.orbit.reset();
-        state_.mirror = {};
-        applied_pose_ = {};
-        state_.link_moves = window::ViewerState{}.link_moves;
+        step_.scene_replaced();
     }
     if (outcome.settings) {
         if (outcome.settings->camera != settings_.camera) {
@@ -483,12 +461,11 @@ std::optional<Failure> WindowLoop::take_panel_outcome(PanelOutcome outcome) {
                 return runtime(index.error());
             }
             s_.camera_index = *index;
-            projection_ = window::orbit_projection(s_.scene, s_.camera_index);
-            state_.orbit.reset();
+            step_.camera_changed();
         }
         settings_ = std::move(*outcome.settings);
         take_settings(mirror_kept(settings_), s_, state_);
-        cameras_.reset(); // --stereo may have changed the eye's width
+        step_.reset_cameras(); // --stereo may have changed the eye's width
         notice_.reset();
     }
     screenshot_asked_ = screenshot_asked_ || outcome.screenshot;
@@ -528,32 +505,17 @@ std::optional<Failure> WindowLoop::step(bool& done) {
     if (done || !read_input(events)) {
         return std::nullopt;
     }
-    // Stereo: cameras, frame and options are one eye's, half the width.
-    const int eye_width_px = settings_.stereo ? std::max(1, size_.width_px / 2) : size_.width_px;
-    if (!cameras_) {
-        auto made = render::make_cameras(s_.scene, s_.camera_index, eye_width_px, size_.height_px);
-        if (!made) {
-            return runtime(made.error());
-        }
-        cameras_ = std::move(*made);
+    // Stereo: cameras, frame and options are one eye's, half the width (window::FrameStep).
+    auto stepped = step_.step(events, size_.width_px, size_.height_px);
+    if (!stepped) {
+        return runtime(stepped.error());
     }
-    for (const gl::InputEvent& event : events) {
-        controls_.apply(event, cameras_->main.pair, state_);
-    }
-    if (state_.quit) {
+    if (!*stepped) { // the input asked to quit
         s_.window->request_close();
         done = true;
         return std::nullopt;
     }
-    if (auto failure = move_mirror()) {
-        return failure;
-    }
-    auto frame = window::make_frame(state_, *cameras_, projection_, s_.scene.world_bounds, eye_width_px,
-                                    size_.height_px);
-    if (!frame) {
-        return runtime(frame.error());
-    }
-    frame->stereo = render::stereo_rig(settings_, frame->cameras.main.pair, s_.scene);
+    std::optional<window::Frame>& frame = *stepped;
     if (notice_ && !state_.show_panel) {
         frame->text.insert(frame->text.begin(), *notice_);
     }

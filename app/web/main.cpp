@@ -94,6 +94,8 @@ int main(int argc, char** argv) {
     web::ViewerOptions options;
     options.scene_path = kScenePath;
     options.canvas = kCanvas;
+    emscripten_get_canvas_element_size(kCanvas, &options.width_px, &options.height_px);
+    options.note = [](std::string_view line) { std::printf("frustum-web: %.*s\n", static_cast<int>(line.size()), line.data()); };
     if (!parse_arguments(argc, argv, options)) {
         return 2;
     }
