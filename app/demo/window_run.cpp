@@ -21,6 +21,7 @@
 #include <window/frame_step.hpp>
 #include <window/gpu_timer.hpp>
 #include <window/imgui_layer.hpp>
+#include <window/key_help.hpp>
 #include <window/live_numbers.hpp>
 #include <window/mirror_pose.hpp>
 #include <window/orbit_camera.hpp>
@@ -29,6 +30,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <optional>
 #include <utility>
 
@@ -297,6 +301,7 @@ private:
                                         double paint_ms);
     std::optional<Failure> take_panel_outcome(PanelOutcome outcome);
     std::optional<Failure> finish_frame(bool& done);
+    void write_state() const;
 
     const WindowRequest& request_;
     WindowSession& s_;
@@ -319,7 +324,26 @@ private:
     bool screenshot_asked_ = false;     // the panel's button, saved at the next frame
     int screenshot_scale_ = 1;          // its size x the window's; above 1 a poster (save_poster())
     std::chrono::steady_clock::time_point last_frame_;
+    // FRUSTUM_WINDOW_STATE=FILE (tests, docs/testing.md): after every frame
+    // FILE holds "frame=N keys=K " + window::state_line() (K: --keys keys
+    // pressed), replaced whole; FILE.log gets each line whose state differs
+    // from the last one logged. Scripts wait for a state there, not for time.
+    const char* state_path_ = std::getenv("FRUSTUM_WINDOW_STATE");
+    mutable std::string logged_state_;
 };
+
+void WindowLoop::write_state() const {
+    const std::string state = window::state_line(state_);
+    const std::string line =
+        "frame=" + std::to_string(run_.frames_drawn) + " keys=" + std::to_string(keys_pressed_) + " " + state + "\n";
+    const std::string path(state_path_), partial = path + ".partial";
+    std::ofstream(partial, std::ios::trunc) << line;
+    std::rename(partial.c_str(), path.c_str()); // a reader sees the old line or the new one, whole
+    if (state != logged_state_) {
+        std::ofstream(path + ".log", std::ios::app) << line;
+        logged_state_ = state;
+    }
+}
 
 void WindowLoop::derive_from_scene() {
     camera_names_.clear();
@@ -490,6 +514,9 @@ std::optional<Failure> WindowLoop::finish_frame(bool& done) {
         screenshot_asked_ = false;
     }
     s_.window->swap_buffers();
+    if (state_path_ != nullptr && *state_path_ != '\0') {
+        write_state();
+    }
     if (auto mean = clock_.tick(std::chrono::steady_clock::now()); mean || titled_effect_ != state_.effect) {
         frame_ms_ = mean ? mean : frame_ms_;
         titled_effect_ = state_.effect;

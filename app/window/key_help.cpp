@@ -51,4 +51,35 @@ std::vector<std::string> help_lines(const ViewerState& state) {
     return lines;
 }
 
+std::string state_line(const ViewerState& state) {
+    const auto degrees = [](float rad) { return render::number_text(rad * 57.29577951308232f); };
+    const auto on = [](bool value) { return value ? std::string("on") : std::string("off"); };
+    std::string line = "effect=" + std::string(render::to_string(state.effect));
+    if (state.orbit) {
+        const glm::vec3 t = state.orbit->target;
+        line += " orbit=" + degrees(state.orbit->yaw_rad) + "," + degrees(state.orbit->pitch_rad) + " pan=" +
+                render::number_text(t.x) + "," + render::number_text(t.y) + "," + render::number_text(t.z) +
+                " zoom=" + render::number_text(state.orbit->distance_m);
+    } else {
+        line += " orbit=scene pan=scene zoom=scene";
+    }
+    line += " mirror.turn=" + degrees(state.mirror.turn_rad) + " mirror.tilt=" + degrees(state.mirror.tilt_rad) +
+            " mirror.slide=" + render::number_text(state.mirror.slide_m) +
+            " mirror.push=" + render::number_text(state.mirror.push_m);
+    line += " mirror-camera=" + std::string(render::to_string(state.mirror_method)) +
+            " tiles=" + std::to_string(state.tile_columns) + "x" + std::to_string(state.tile_rows) +
+            " lens-power=" + render::number_text(state.lens_power) + " depth=" + std::to_string(state.recursion_depth);
+    const char* sides[] = {"left", "right"};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const render::LinkMove move = i < state.link_moves.size() ? state.link_moves[i] : render::LinkMove{};
+        line += std::string(" ") + sides[i] + ".push=" + render::number_text(move.push_m);
+    }
+    for (std::size_t i = 0; i < 2; ++i) {
+        const render::LinkMove move = i < state.link_moves.size() ? state.link_moves[i] : render::LinkMove{};
+        line += std::string(" ") + sides[i] + ".turn=" + degrees(move.turn_rad);
+    }
+    line += " inset=" + on(state.show_inset) + " panel=" + on(state.show_panel) + " help=" + on(state.show_help);
+    return line;
+}
+
 } // namespace window
