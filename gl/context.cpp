@@ -1,6 +1,7 @@
 #include "gl/context.hpp"
 
 #include "gl/debug_output.hpp"
+#include "gl/enum_name.hpp"
 #include "gl/gl_api.hpp"
 
 #include <algorithm>
@@ -15,20 +16,18 @@ std::string gl_string(PFNGLGETSTRINGPROC get_string, GLenum name) {
 
 } // namespace
 
+constexpr EnumName<Backend> kBackendNames[] = {
+    {Backend::Egl, "egl"}, {Backend::OsMesa, "osmesa"}, {Backend::Web, "webgl"}};
+
 std::string_view to_string(Backend backend) {
-    switch (backend) {
-    case Backend::Egl: return "egl";
-    case Backend::OsMesa: return "osmesa";
-    case Backend::Web: return "webgl";
-    }
-    return "unknown";
+    const char* name = find_enum_name(kBackendNames, backend);
+    return name ? name : "unknown";
 }
 
 frustum::Result<Backend> parse_backend(std::string_view text) {
-    for (Backend backend : {Backend::Egl, Backend::OsMesa}) {
-        if (text == to_string(backend)) {
-            return backend;
-        }
+    // --backend names the offscreen ones only.
+    if (auto backend = frustum::detail::find_enum_value(kBackendNames, text); backend && *backend != Backend::Web) {
+        return *backend;
     }
     return frustum::Error{"gl::parse_backend(): backend must be 'egl' or 'osmesa', got '" +
                           std::string(text) + "'"};

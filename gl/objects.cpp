@@ -2,6 +2,7 @@
 
 #include <array>
 #include <atomic>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -12,30 +13,39 @@ std::array<std::atomic<int>, kObjectKindCount> g_live{};
 
 std::atomic<int>& live(ObjectKind kind) { return g_live[static_cast<std::size_t>(kind)]; }
 
+// glGen* and glDelete* of the kinds made one name at a time through them
+// (in ObjectKind order); shaders and programs are made by glCreate* (below)
+// and deleted by glDelete*(id).
+struct NameCalls {
+    PFNGLGENBUFFERSPROC Functions::*generate;
+    PFNGLDELETEBUFFERSPROC Functions::*destroy;
+};
+const NameCalls kNameCalls[] = {
+    {&Functions::GenBuffers, &Functions::DeleteBuffers},
+    {&Functions::GenVertexArrays, &Functions::DeleteVertexArrays},
+    {&Functions::GenTextures, &Functions::DeleteTextures},
+    {&Functions::GenRenderbuffers, &Functions::DeleteRenderbuffers},
+    {&Functions::GenFramebuffers, &Functions::DeleteFramebuffers},
+    {nullptr, nullptr}, // Shader
+    {nullptr, nullptr}, // Program
+    {&Functions::GenQueries, &Functions::DeleteQueries},
+};
+static_assert(std::size(kNameCalls) == kObjectKindCount, "one entry per ObjectKind");
+
 void delete_object(const Functions& fn, ObjectKind kind, GLuint id) {
-    switch (kind) {
-    case ObjectKind::Buffer: fn.DeleteBuffers(1, &id); break;
-    case ObjectKind::VertexArray: fn.DeleteVertexArrays(1, &id); break;
-    case ObjectKind::Texture: fn.DeleteTextures(1, &id); break;
-    case ObjectKind::Renderbuffer: fn.DeleteRenderbuffers(1, &id); break;
-    case ObjectKind::Framebuffer: fn.DeleteFramebuffers(1, &id); break;
-    case ObjectKind::Shader: fn.DeleteShader(id); break;
-    case ObjectKind::Program: fn.DeleteProgram(id); break;
-    case ObjectKind::Query: fn.DeleteQueries(1, &id); break;
+    if (kind == ObjectKind::Shader) {
+        fn.DeleteShader(id);
+    } else if (kind == ObjectKind::Program) {
+        fn.DeleteProgram(id);
+    } else {
+        (fn.*kNameCalls[static_cast<std::size_t>(kind)].destroy)(1, &id);
     }
 }
 
 GLuint generate(const Functions& fn, ObjectKind kind) {
     GLuint id = 0;
-    switch (kind) {
-    case ObjectKind::Buffer: fn.GenBuffers(1, &id); break;
-    case ObjectKind::VertexArray: fn.GenVertexArrays(1, &id); break;
-    case ObjectKind::Texture: fn.GenTextures(1, &id); break;
-    case ObjectKind::Renderbuffer: fn.GenRenderbuffers(1, &id); break;
-    case ObjectKind::Framebuffer: fn.GenFramebuffers(1, &id); break;
-    case ObjectKind::Query: fn.GenQueries(1, &id); break;
-    case ObjectKind::Shader:
-    case ObjectKind::Program: break; // made by glCreate*, see below
+    if (const auto call = kNameCalls[static_cast<std::size_t>(kind)].generate) {
+        (fn.*call)(1, &id);
     }
     return id;
 }

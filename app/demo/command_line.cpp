@@ -20,11 +20,8 @@ unsigned long long output_image_bytes(int width_px, int height_px, std::size_t e
 
 std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::vector<std::string>& args) {
     auto parsed = parse_options(kRender, args);
-    if (auto* failure = std::get_if<Failure>(&parsed)) {
-        return *failure;
-    }
-    if (std::holds_alternative<HelpRequest>(parsed)) {
-        return HelpRequest{};
+    if (auto early = failure_or_help<std::variant<HelpRequest, RenderRequest, Failure>>(parsed)) {
+        return *early;
     }
     RenderRequest& request = std::get<Settings>(parsed);
     if (request.tile_columns > request.width_px || request.tile_rows > request.height_px) {

@@ -120,11 +120,8 @@ std::string curved_report_help() {
 
 std::variant<HelpRequest, CurvedReportRequest, Failure> parse_curved_report(const std::vector<std::string>& args) {
     auto parsed = parse_options(kCurvedReport, args);
-    if (auto* failure = std::get_if<Failure>(&parsed)) {
-        return *failure;
-    }
-    if (std::holds_alternative<HelpRequest>(parsed)) {
-        return HelpRequest{};
+    if (auto early = failure_or_help<std::variant<HelpRequest, CurvedReportRequest, Failure>>(parsed)) {
+        return *early;
     }
     CurvedReportRequest request;
     request.render = std::get<Settings>(parsed);

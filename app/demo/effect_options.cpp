@@ -17,6 +17,19 @@ constexpr float kMaxDepthM = 1000.0f; // --slit, --pivot (as nonaffine-report)
 
 std::string got(const std::string& value) { return ", got '" + value + "'"; }
 
+// A value naming one of an enum's values (`parse`, its name table) into
+// `field`; else the usage error "unknown <what> 'x' (expected <choices>)".
+template <class Value, class Parse>
+std::optional<Failure> apply_name(Value& field, const std::string& value, const Parse& parse, const char* what,
+                                  const char* choices) {
+    const std::optional<Value> parsed = parse(value);
+    if (!parsed) {
+        return usage(std::string("unknown ") + what + " '" + value + "' (expected " + choices + ")");
+    }
+    field = *parsed;
+    return std::nullopt;
+}
+
 std::optional<Failure> apply_tiles(render::EffectParams& s, const std::string& value) {
     const auto tiles = parse_pair(value, kMaxTileSide);
     if (!tiles) {
@@ -32,12 +45,8 @@ std::optional<Failure> apply_tile_borders(render::EffectParams& s, const std::st
 }
 
 std::optional<Failure> apply_mirror(render::EffectParams& s, const std::string& value) {
-    const auto method = render::parse_mirror_method(value);
-    if (!method) {
-        return usage("unknown mirror method '" + value + "' (expected oblique, rectangle or reflect_only)");
-    }
-    s.mirror_method = *method;
-    return std::nullopt;
+    return apply_name(s.mirror_method, value, render::parse_mirror_method, "mirror method",
+                      "oblique, rectangle or reflect_only");
 }
 
 std::optional<Failure> apply_mirror_plane(render::EffectParams& s, const std::string& value) {
@@ -84,12 +93,7 @@ std::optional<Failure> apply_sagitta(render::EffectParams& s, const std::string&
 }
 
 std::optional<Failure> apply_cap(render::EffectParams& s, const std::string& value) {
-    const auto shape = render::parse_cap_shape(value);
-    if (!shape) {
-        return usage("unknown cap shape '" + value + "' (expected sphere or cylinder)");
-    }
-    s.curved.shape = *shape;
-    return std::nullopt;
+    return apply_name(s.curved.shape, value, render::parse_cap_shape, "cap shape", "sphere or cylinder");
 }
 
 std::optional<Failure> apply_lens_grid(render::EffectParams& s, const std::string& value) {
@@ -212,12 +216,7 @@ std::optional<Failure> apply_recursion_depth(render::EffectParams& s, const std:
 }
 
 std::optional<Failure> apply_recursion_links(render::EffectParams& s, const std::string& value) {
-    const auto set = render::parse_link_set(value);
-    if (!set) {
-        return usage("unknown recursion links '" + value + "' (expected mirrors or portals)");
-    }
-    s.recursion_links = *set;
-    return std::nullopt;
+    return apply_name(s.recursion_links, value, render::parse_link_set, "recursion links", "mirrors or portals");
 }
 
 

@@ -20,22 +20,15 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     render::LensDraw draw{s.cameras->main.pair, *lens, 1, disc};
 
     int levels = 0;
-    auto reference_ms = s.median_ms(request.runs, [&]() -> frustum::Status {
-        auto drawn = render::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
-        if (!drawn) {
-            return frustum::Error{drawn.error()};
-        }
-        levels = *drawn;
-        return {};
-    });
-    if (!reference_ms) {
-        return runtime(reference_ms.error());
+    auto timed_reference = s.timed_read(request.runs, ReportSession::keeping(levels, [&] {
+        return render::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
+    }));
+    if (!timed_reference) {
+        return runtime(timed_reference.error());
     }
-    auto reference = s.read();
-    if (!reference) {
-        return runtime(reference.error());
-    }
-    if (auto status = write(*reference, "lens-reference.png"); !status) {
+    const double reference_ms = timed_reference->median_ms;
+    const image::Image& reference = timed_reference->picture;
+    if (auto status = write(reference, "lens-reference.png"); !status) {
         return runtime(status.error());
     }
     // How far the reference itself is from converged: the same at twice the supersampling.
@@ -48,7 +41,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
         if (!finer) {
             return runtime(finer.error());
         }
-        const render::MirrorError e = picture_error(*reference, *finer, kWarpThresholdLsb);
+        const render::MirrorError e = picture_error(reference, *finer, kWarpThresholdLsb);
         self_check = fixed(e.mean_abs, 2) + " LSB mean, " + std::to_string(e.max_abs) + " max, " +
                      fixed(100.0 * e.fraction_over, 2) + "% of the pixels over " + std::to_string(kWarpThresholdLsb) +
                      " LSB";
@@ -71,21 +64,18 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     for (int grid : request.grids) {
         reporter.progress("grid " + std::to_string(grid));
         draw.grid = grid;
-        auto ms = s.median_ms(request.runs, [&] { return render::draw_lens_frame(ctx, *s.frame, draw); });
-        if (!ms) {
-            return runtime(ms.error());
+        auto timed = s.timed_read(request.runs, [&] { return render::draw_lens_frame(ctx, *s.frame, draw); });
+        if (!timed) {
+            return runtime(timed.error());
         }
-        auto tiled = s.read();
-        if (!tiled) {
-            return runtime(tiled.error());
-        }
+        const image::Image& tiled = timed->picture;
         table.row({std::to_string(grid) + " x " + std::to_string(grid), std::to_string(grid * grid),
-                   error_cells(picture_error(*tiled, *reference, kWarpThresholdLsb)), fixed(*ms, 2)});
+                   error_cells(picture_error(tiled, reference, kWarpThresholdLsb)), fixed(timed->median_ms, 2)});
         const std::string suffix = std::to_string(grid) + ".png";
-        if (auto status = write(*tiled, "lens-" + suffix); !status) {
+        if (auto status = write(tiled, "lens-" + suffix); !status) {
             return runtime(status.error());
         }
-        if (auto status = write(diff_picture(*tiled, *reference), "lens-diff-" + suffix); !status) {
+        if (auto status = write(diff_picture(tiled, reference), "lens-diff-" + suffix); !status) {
             return runtime(status.error());
         }
     }
@@ -95,7 +85,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
        << " mm on the near plane; camera '" << s.cameras->main.name << "', " << r.width_px << "x" << r.height_px
        << "; GL: " << s.context->describe().renderer << ".\n"
        << "Reference: " << levels << " nested level(s) at " << request.supersampling << "x, "
-       << fixed(*reference_ms, 2) << " ms; against itself at " << 2 * request.supersampling << "x: " << self_check
+       << fixed(reference_ms, 2) << " ms; against itself at " << 2 * request.supersampling << "x: " << self_check
        << ". Plain frame (lens disc hidden): " << fixed(*plain_ms, 2) << " ms.\n\n"
        << table.text();
     report.markdown = md.str();

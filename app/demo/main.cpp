@@ -15,62 +15,59 @@
 
 namespace {
 
-// frustum-demo curved-report: the Markdown report on stdout, progress on stderr.
-int curved_report_main(const std::vector<std::string>& args) {
-    const auto parsed = demo::parse_curved_report(args);
+// A usage or runtime failure on stderr; its exit status.
+int print_failure(const demo::Failure& failure) {
+    std::cerr << "frustum-demo: error: " << failure.message << '\n';
+    return static_cast<int>(failure.status);
+}
+
+// Progress lines as they are, notes with the program's name, both on stderr.
+demo::Reporter stderr_reporter() {
+    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
+    return demo::Reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
+}
+
+// A report command: its parsed command line (`Request`, --help or a usage
+// failure) -> the report `run` makes, its Markdown on stdout.
+template <class Request, class Parsed, class Run>
+int report_main(const Parsed& parsed, const std::string& help, const Run& run) {
     if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
+        return print_failure(*failure);
     }
     if (std::holds_alternative<demo::HelpRequest>(parsed)) {
-        std::cout << demo::curved_report_help();
+        std::cout << help;
         return 0;
     }
-    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
-    const demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
-    const auto outcome = demo::run_curved_report(std::get<demo::CurvedReportRequest>(parsed), reporter);
+    const auto outcome = run(std::get<Request>(parsed), stderr_reporter());
     if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
+        return print_failure(*failure);
     }
-    std::cout << std::get<demo::CurvedReport>(outcome).markdown;
+    std::cout << std::get<0>(outcome).markdown;
     return 0;
+}
+
+// frustum-demo curved-report: the Markdown report on stdout, progress on stderr.
+int curved_report_main(const std::vector<std::string>& args) {
+    return report_main<demo::CurvedReportRequest>(demo::parse_curved_report(args), demo::curved_report_help(),
+                                                  demo::run_curved_report);
 }
 
 // frustum-demo lens-report | nonaffine-report: as curved-report.
 int warp_report_main(const std::vector<std::string>& args) {
-    const auto parsed = demo::parse_warp_report(args);
-    if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
-    }
-    if (std::holds_alternative<demo::HelpRequest>(parsed)) {
-        std::cout << demo::warp_report_help(args[0]);
-        return 0;
-    }
-    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
-    const demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
-    const auto outcome = demo::run_warp_report(std::get<demo::WarpReportRequest>(parsed), reporter);
-    if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
-    }
-    std::cout << std::get<demo::WarpReport>(outcome).markdown;
-    return 0;
+    return report_main<demo::WarpReportRequest>(demo::parse_warp_report(args), demo::warp_report_help(args[0]),
+                                                demo::run_warp_report);
 }
 
 int render_main(const std::vector<std::string>& args) {
     const auto parsed = demo::parse_command_line(args);
     if (const auto* failure = std::get_if<demo::Failure>(&parsed)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
+        return print_failure(*failure);
     }
     if (std::holds_alternative<demo::HelpRequest>(parsed)) {
         std::cout << demo::help_text();
         return 0;
     }
-    const auto print_line = [](std::string_view line) { std::cerr << line << '\n'; };
-    demo::Reporter reporter{print_line, [](std::string_view line) { std::cerr << "frustum-demo: " << line << '\n'; }};
+    demo::Reporter reporter = stderr_reporter();
     const auto& request = std::get<demo::RenderRequest>(parsed);
     // A long render's progress: in place on a terminal, one line each with --verbose, else quiet.
     if (isatty(STDERR_FILENO)) {
@@ -84,8 +81,7 @@ int render_main(const std::vector<std::string>& args) {
     }
     const auto outcome = demo::run_render(request, reporter);
     if (const auto* failure = std::get_if<demo::Failure>(&outcome)) {
-        std::cerr << "frustum-demo: error: " << failure->message << '\n';
-        return static_cast<int>(failure->status);
+        return print_failure(*failure);
     }
     const auto& run = std::get<demo::RenderRun>(outcome);
     for (const std::string& path : run.written_paths) {

@@ -62,32 +62,24 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
     for (const Row& row : rows) {
         reporter.progress(row.label);
         render::NonAffineStats stats;
-        auto ms = s.median_ms(request.runs, [&]() -> frustum::Status {
-            auto drawn = render::draw_non_affine_frame(ctx, *s.frame, geometry, *frustum, row.options);
-            if (!drawn) {
-                return frustum::Error{drawn.error()};
-            }
-            stats = *drawn;
-            return {};
-        });
-        if (!ms) {
-            return runtime(ms.error());
+        auto timed = s.timed_read(request.runs, ReportSession::keeping(stats, [&] {
+            return render::draw_non_affine_frame(ctx, *s.frame, geometry, *frustum, row.options);
+        }));
+        if (!timed) {
+            return runtime(timed.error());
         }
-        auto picture = s.read();
-        if (!picture) {
-            return runtime(picture.error());
-        }
+        const image::Image& picture = timed->picture;
         table.row({row.label, std::to_string(stats.triangles), std::to_string(stats.culled),
-                   error_cells(picture_error(*picture, reference, kWarpThresholdLsb)), fixed(*ms, 2)});
-        if (auto status = write(*picture, row.stem + ".png"); !status) {
+                   error_cells(picture_error(picture, reference, kWarpThresholdLsb)), fixed(timed->median_ms, 2)});
+        if (auto status = write(picture, row.stem + ".png"); !status) {
             return runtime(status.error());
         }
         if (row.stem == "nonaffine-cull") {
-            if (auto status = write(diff_picture(*picture, reference), "nonaffine-diff-cull.png"); !status) {
+            if (auto status = write(diff_picture(picture, reference), "nonaffine-diff-cull.png"); !status) {
                 return runtime(status.error());
             }
         }
-        last = std::move(*picture);
+        last = std::move(timed->picture);
     }
     if (auto status = write(diff_picture(last, reference), "nonaffine-diff.png"); !status) {
         return runtime(status.error());

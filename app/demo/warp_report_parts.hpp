@@ -39,6 +39,36 @@ struct ReportSession : Session {
         }
         return timing->median_ms;
     }
+
+    // A draw that returns a value (Result<T>) as median_ms() times it: the last run's value kept in `value`.
+    template <class T, class Draw>
+    static std::function<frustum::Status()> keeping(T& value, Draw draw) {
+        return [&value, draw]() -> frustum::Status {
+            auto drawn = draw();
+            if (!drawn) {
+                return frustum::Error{drawn.error()};
+            }
+            value = *drawn;
+            return {};
+        };
+    }
+
+    // median_ms() of `draw`, then the frame it drew (read()).
+    struct Timed {
+        double median_ms = 0.0;
+        image::Image picture;
+    };
+    frustum::Result<Timed> timed_read(int runs, const std::function<frustum::Status()>& draw) const {
+        auto ms = median_ms(runs, draw);
+        if (!ms) {
+            return frustum::Error{ms.error()};
+        }
+        auto picture = read();
+        if (!picture) {
+            return frustum::Error{picture.error()};
+        }
+        return Timed{*ms, std::move(*picture)};
+    }
 };
 
 std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, ReportSession& s, const Reporter& reporter);

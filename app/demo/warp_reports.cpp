@@ -64,11 +64,8 @@ std::variant<HelpRequest, WarpReportRequest, Failure> parse_warp_report(const st
     request.kind = !args.empty() && args[0] == "lens-report" ? WarpReportRequest::Kind::Lens
                                                              : WarpReportRequest::Kind::NonAffine;
     auto parsed = parse_options(request.kind == WarpReportRequest::Kind::Lens ? kLensReport : kNonAffineReport, args);
-    if (auto* failure = std::get_if<Failure>(&parsed)) {
-        return *failure;
-    }
-    if (std::holds_alternative<HelpRequest>(parsed)) {
-        return HelpRequest{};
+    if (auto early = failure_or_help<std::variant<HelpRequest, WarpReportRequest, Failure>>(parsed)) {
+        return *early;
     }
     request.render = std::get<Settings>(parsed);
     const Settings& s = request.render;

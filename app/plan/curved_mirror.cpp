@@ -1,5 +1,6 @@
 #include "plan/curved_mirror.hpp"
 
+#include <frustum/detail/enum_names.hpp>
 #include <frustum/from_planes.hpp>
 #include <frustum/queries.hpp>
 
@@ -92,21 +93,16 @@ bool sees_front(const CurvedMirror& mirror, const glm::dvec3& eye, int grid, int
 
 } // namespace
 
+constexpr frustum::detail::EnumName<CapShape> kCapShapeNames[] = {{CapShape::Sphere, "sphere"},
+                                                                   {CapShape::Cylinder, "cylinder"}};
+
 std::string_view to_string(CapShape shape) {
-    switch (shape) {
-    case CapShape::Sphere: return "sphere";
-    case CapShape::Cylinder: return "cylinder";
-    }
-    return "?";
+    const char* name = frustum::detail::find_enum_name(kCapShapeNames, shape);
+    return name ? name : "?";
 }
 
 std::optional<CapShape> parse_cap_shape(std::string_view text) {
-    for (CapShape shape : {CapShape::Sphere, CapShape::Cylinder}) {
-        if (text == to_string(shape)) {
-            return shape;
-        }
-    }
-    return std::nullopt;
+    return frustum::detail::find_enum_value(kCapShapeNames, text);
 }
 
 frustum::Result<CurvedMirror> CurvedMirror::create(const scene::MirrorRect& footprint, CapShape shape,

@@ -1,47 +1,39 @@
 #include "plan/effect.hpp"
 
+#include <frustum/detail/enum_names.hpp>
+
 namespace render {
+namespace {
+
+using frustum::detail::EnumName;
+
+constexpr EnumName<Effect> kEffectNames[] = {
+    {Effect::Plain, "plain"},   {Effect::Mirror, "mirror"},       {Effect::Tiles, "tiles"},
+    {Effect::Frustum, "frustum"}, {Effect::Curved, "curved"},     {Effect::Lens, "lens"},
+    {Effect::NonAffine, "nonaffine"}, {Effect::Portal, "portal"}, {Effect::Recursion, "recursion"}};
+
+constexpr EnumName<MirrorMethod> kMirrorMethodNames[] = {{MirrorMethod::Oblique, "oblique"},
+                                                         {MirrorMethod::Rectangle, "rectangle"},
+                                                         {MirrorMethod::ReflectOnly, "reflect_only"}};
+
+} // namespace
 
 std::string_view to_string(Effect effect) {
-    switch (effect) {
-    case Effect::Plain: return "plain";
-    case Effect::Mirror: return "mirror";
-    case Effect::Tiles: return "tiles";
-    case Effect::Frustum: return "frustum";
-    case Effect::Curved: return "curved";
-    case Effect::Lens: return "lens";
-    case Effect::NonAffine: return "nonaffine";
-    case Effect::Portal: return "portal";
-    case Effect::Recursion: return "recursion";
-    }
-    return "?";
+    const char* name = frustum::detail::find_enum_name(kEffectNames, effect);
+    return name ? name : "?";
 }
 
 std::optional<Effect> parse_effect(std::string_view text) {
-    for (Effect effect : kAllEffects) {
-        if (text == to_string(effect)) {
-            return effect;
-        }
-    }
-    return std::nullopt;
+    return frustum::detail::find_enum_value(kEffectNames, text);
 }
 
 std::string_view to_string(MirrorMethod method) {
-    switch (method) {
-    case MirrorMethod::Oblique: return "oblique";
-    case MirrorMethod::Rectangle: return "rectangle";
-    case MirrorMethod::ReflectOnly: return "reflect_only";
-    }
-    return "?";
+    const char* name = frustum::detail::find_enum_name(kMirrorMethodNames, method);
+    return name ? name : "?";
 }
 
 std::optional<MirrorMethod> parse_mirror_method(std::string_view text) {
-    for (MirrorMethod method : {MirrorMethod::Oblique, MirrorMethod::Rectangle, MirrorMethod::ReflectOnly}) {
-        if (text == to_string(method)) {
-            return method;
-        }
-    }
-    return std::nullopt;
+    return frustum::detail::find_enum_value(kMirrorMethodNames, text);
 }
 
 } // namespace render

@@ -25,17 +25,12 @@ frustum::Status draw_frustum_view(const PassContext& ctx, const frustum::MatrixP
         vertices.insert(vertices.end(), lines.begin(), lines.end());
     }
     const gl::Functions& fn = ctx.fn;
-    auto buffer = gl::Buffer::create(fn);
-    auto vertex_array = gl::VertexArray::create(fn);
-    if (!buffer || !vertex_array) {
-        return frustum::Error{"render::draw_frustum_view(): " + (!buffer ? buffer.error() : vertex_array.error())};
+    auto lines = create_position_buffer(fn, "render::draw_frustum_view()"); // bound
+    if (!lines) {
+        return lines.take_error();
     }
-    fn.BindVertexArray(vertex_array->id());
-    fn.BindBuffer(GL_ARRAY_BUFFER, buffer->id());
     fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)), vertices.data(),
                   GL_STREAM_DRAW);
-    fn.EnableVertexAttribArray(kPositionLocation);
-    fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
 
     const LineProgram& p = ctx.programs.line;
     p.use();

@@ -174,6 +174,19 @@ frustum::Result<gl::Texture> upload_texture(const gl::Functions& fn, const image
 
 } // namespace
 
+frustum::Result<PositionBuffer> create_position_buffer(const gl::Functions& fn, const std::string& caller) {
+    auto buffer = gl::Buffer::create(fn);
+    auto vertex_array = gl::VertexArray::create(fn);
+    if (!buffer || !vertex_array) {
+        return frustum::Error{caller + ": " + (!buffer ? buffer.error() : vertex_array.error())};
+    }
+    fn.BindVertexArray(vertex_array->id());
+    fn.BindBuffer(GL_ARRAY_BUFFER, buffer->id());
+    fn.EnableVertexAttribArray(kPositionLocation);
+    fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    return PositionBuffer{std::move(*buffer), std::move(*vertex_array)};
+}
+
 frustum::Result<GpuScene> GpuScene::upload(const gl::Functions& fn, const scene::Scene& scene) {
     GpuScene gpu;
     for (std::size_t i = 0; i < scene.images.size(); ++i) {

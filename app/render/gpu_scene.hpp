@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace render {
@@ -22,6 +23,15 @@ enum AttributeLocation : GLuint {
     kColorLocation = 2,
     kTexcoordLocation = 3,
 };
+
+// A vertex array whose one attribute, kPositionLocation, is a buffer of
+// glm::vec3 (lines, overlay triangles), both bound on return. Errors are
+// gl::Buffer's or gl::VertexArray's after "<caller>: ".
+struct PositionBuffer {
+    gl::Buffer buffer;
+    gl::VertexArray vertex_array;
+};
+frustum::Result<PositionBuffer> create_position_buffer(const gl::Functions& fn, const std::string& caller);
 
 struct GpuPrimitive {
     gl::VertexArray vertex_array;

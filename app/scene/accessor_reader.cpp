@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <type_traits>
 
 namespace scene::detail {
 
@@ -17,24 +19,24 @@ T load(const std::uint8_t* bytes) {
     return value;
 }
 
+// An integer component as float; normalized (glTF): divided by the type's
+// maximum, signed ones clamped at -1.
+template <class Int>
+float integer_as_float(const std::uint8_t* bytes, bool normalized) {
+    const float value = load<Int>(bytes);
+    if (!normalized) {
+        return value;
+    }
+    const float scaled = value / static_cast<float>(std::numeric_limits<Int>::max());
+    return std::is_signed<Int>::value ? std::max(scaled, -1.0f) : scaled;
+}
+
 float component_as_float(const std::uint8_t* bytes, int component_type, bool normalized) {
     switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        const float value = load<std::int8_t>(bytes);
-        return normalized ? std::max(value / 127.0f, -1.0f) : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-        const float value = load<std::uint8_t>(bytes);
-        return normalized ? value / 255.0f : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        const float value = load<std::int16_t>(bytes);
-        return normalized ? std::max(value / 32767.0f, -1.0f) : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        const float value = load<std::uint16_t>(bytes);
-        return normalized ? value / 65535.0f : value;
-    }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return integer_as_float<std::int8_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return integer_as_float<std::uint8_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return integer_as_float<std::int16_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return integer_as_float<std::uint16_t>(bytes, normalized);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return static_cast<float>(load<std::uint32_t>(bytes));
     default: return load<float>(bytes); // FLOAT: the only other validated type
     }

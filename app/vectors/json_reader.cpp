@@ -1,5 +1,7 @@
 #include "vectors/json_reader.hpp"
 
+#include "vectors/json_escapes.hpp"
+
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>
@@ -114,17 +116,35 @@ private:
         }
     }
 
-    json parse_object(int depth) {
+    // `open` (at pos_), then items up to `close`, separated by ','; parse_item() reads each.
+    template <class ParseItem>
+    void parse_items(int depth, char close, const char* expected, const ParseItem& parse_item) {
         check_depth(depth);
-        ++pos_; // '{'
-        json object = json::object();
+        ++pos_; // '{' or '['
         skip_space();
-        if (peek() == '}') {
+        if (peek() == close) {
             ++pos_;
-            return object;
+            return;
         }
         for (;;) {
             skip_space();
+            parse_item();
+            skip_space();
+            if (peek() == ',') {
+                ++pos_;
+                continue;
+            }
+            if (peek() == close) {
+                ++pos_;
+                return;
+            }
+            fail(expected);
+        }
+    }
+
+    json parse_object(int depth) {
+        json object = json::object();
+        parse_items(depth, '}', "expected ',' or '}'", [&] {
             if (peek() != '"') {
                 fail("expected a key string");
             }
@@ -140,42 +160,14 @@ private:
             ++pos_;
             skip_space();
             object[key] = parse_value(depth);
-            skip_space();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            if (peek() == '}') {
-                ++pos_;
-                return object;
-            }
-            fail("expected ',' or '}'");
-        }
+        });
+        return object;
     }
 
     json parse_array(int depth) {
-        check_depth(depth);
-        ++pos_; // '['
         json array = json::array();
-        skip_space();
-        if (peek() == ']') {
-            ++pos_;
-            return array;
-        }
-        for (;;) {
-            skip_space();
-            array.push_back(parse_value(depth));
-            skip_space();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            if (peek() == ']') {
-                ++pos_;
-                return array;
-            }
-            fail("expected ',' or ']'");
-        }
+        parse_items(depth, ']', "expected ',' or ']'", [&] { array.push_back(parse_value(depth)); });
+        return array;
     }
 
     // number = [ "-" ] int [ frac ] [ exp ]; int = "0" / digit1-9 *digit
@@ -298,17 +290,19 @@ private:
         ++pos_; // '\'
         const char c = peek();
         ++pos_;
-        switch (c) {
-        case '"': out += '"'; return;
-        case '\\': out += '\\'; return;
-        case '/': out += '/'; return;
-        case 'b': out += '\b'; return;
-        case 'f': out += '\f'; return;
-        case 'n': out += '\n'; return;
-        case 'r': out += '\r'; return;
-        case 't': out += '\t'; return;
-        case 'u': break;
-        default: --pos_; fail("invalid escape sequence");
+        if (c == '/') {
+            out += '/';
+            return;
+        }
+        for (const JsonEscape& escape : kJsonEscapes) {
+            if (c == escape.letter) {
+                out += escape.character;
+                return;
+            }
+        }
+        if (c != 'u') {
+            --pos_;
+            fail("invalid escape sequence");
         }
         unsigned code = hex4();
         if (code >= 0xDC00 && code <= 0xDFFF) {

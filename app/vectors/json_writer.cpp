@@ -2,7 +2,11 @@
 
 #include <frustum/detail/errors.hpp>
 
+#include "vectors/json_escapes.hpp"
+
+#include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <cstdio>
 
 namespace vectors {
@@ -15,22 +19,17 @@ void write_string(std::string& out, const std::string& s) {
     out += '"';
     for (const char ch : s) {
         const auto c = static_cast<unsigned char>(ch);
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
-        default:
-            if (c < 0x20) {
-                char buffer[8];
-                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                out += buffer;
-            } else {
-                out += ch; // UTF-8 passes through (the reader validated it)
-            }
+        const JsonEscape* escape = std::find_if(std::begin(kJsonEscapes), std::end(kJsonEscapes),
+                                                [ch](const JsonEscape& e) { return e.character == ch; });
+        if (escape != std::end(kJsonEscapes)) {
+            out += '\\';
+            out += escape->letter;
+        } else if (c < 0x20) {
+            char buffer[8];
+            std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+            out += buffer;
+        } else {
+            out += ch; // UTF-8 passes through (the reader validated it)
         }
     }
     out += '"';

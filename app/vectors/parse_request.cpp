@@ -1,5 +1,7 @@
 #include "vectors/parse_request.hpp"
 
+#include <frustum/detail/enum_names.hpp>
+
 #include <array>
 #include <cstddef>
 #include <initializer_list>
@@ -10,12 +12,10 @@
 namespace vectors {
 
 const char* op_name(PlaneOp::Kind kind) {
-    switch (kind) {
-    case PlaneOp::Kind::Reflect: return "reflect";
-    case PlaneOp::Kind::Clip: return "clip";
-    case PlaneOp::Kind::Mirror: return "mirror";
-    }
-    return "?";
+    constexpr frustum::detail::EnumName<PlaneOp::Kind> kNames[] = {
+        {PlaneOp::Kind::Reflect, "reflect"}, {PlaneOp::Kind::Clip, "clip"}, {PlaneOp::Kind::Mirror, "mirror"}};
+    const char* name = frustum::detail::find_enum_name(kNames, kind);
+    return name ? name : "?";
 }
 
 namespace {
@@ -181,37 +181,30 @@ Camera perspective(const json& value, const std::string& path) {
     return c;
 }
 
-Camera frustum_camera(const json& value, const std::string& path) {
-    object(value, path, {"left", "right", "bottom", "top", "near", "far"});
-    FrustumCamera c;
-    c.left = number_at(value, path, "left");
-    c.right = number_at(value, path, "right");
-    c.bottom = number_at(value, path, "bottom");
-    c.top = number_at(value, path, "top");
-    c.near_m = number_at(value, path, "near");
-    c.far_m = far_at(value, path);
-    return c;
+// "left", "right", "bottom", "top" into the fields of those names, each read(value, path, key).
+template <class Sides, class Read>
+void sides_at(Sides& c, const json& value, const std::string& path, const Read& read) {
+    c.left = read(value, path, "left");
+    c.right = read(value, path, "right");
+    c.bottom = read(value, path, "bottom");
+    c.top = read(value, path, "top");
 }
 
-Camera ortho(const json& value, const std::string& path) {
+// frustum and ortho: the same six keys, "far" read by read_far (a frustum's may be infinite: far_at()).
+template <class BoxCamera, class ReadFar>
+Camera box_camera(const json& value, const std::string& path, const ReadFar& read_far) {
     object(value, path, {"left", "right", "bottom", "top", "near", "far"});
-    OrthoCamera c;
-    c.left = number_at(value, path, "left");
-    c.right = number_at(value, path, "right");
-    c.bottom = number_at(value, path, "bottom");
-    c.top = number_at(value, path, "top");
+    BoxCamera c;
+    sides_at(c, value, path, number_at);
     c.near_m = number_at(value, path, "near");
-    c.far_m = number_at(value, path, "far");
+    c.far_m = read_far(value, path);
     return c;
 }
 
 Camera planes(const json& value, const std::string& path) {
     object(value, path, {"left", "right", "bottom", "top", "near", "far_point", "far"});
     PlanesCamera c;
-    c.left = plane_at(value, path, "left");
-    c.right = plane_at(value, path, "right");
-    c.bottom = plane_at(value, path, "bottom");
-    c.top = plane_at(value, path, "top");
+    sides_at(c, value, path, plane_at);
     c.near = plane_at(value, path, "near");
     const json* far_point = optional(value, "far_point");
     const json* far = optional(value, "far");
@@ -261,8 +254,11 @@ Camera camera(const json& value, const std::string& path) {
     const json& body = value.front();
     const std::string body_path = child(path, kind);
     if (kind == "perspective") return perspective(body, body_path);
-    if (kind == "frustum") return frustum_camera(body, body_path);
-    if (kind == "ortho") return ortho(body, body_path);
+    if (kind == "frustum") return box_camera<FrustumCamera>(body, body_path, far_at);
+    if (kind == "ortho") {
+        return box_camera<OrthoCamera>(body, body_path,
+                                       [](const json& v, const std::string& p) { return number_at(v, p, "far"); });
+    }
     if (kind == "planes") return planes(body, body_path);
     if (kind == "mirror_rect") return mirror_rect(body, body_path);
     return matrix(body, body_path);

@@ -32,18 +32,13 @@ TextOverlay::TextOverlay(const gl::Functions& fn, gl::Buffer buffer, gl::VertexA
     : fn_(&fn), buffer_(std::move(buffer)), vertex_array_(std::move(vertex_array)) {}
 
 frustum::Result<TextOverlay> TextOverlay::create(const gl::Functions& fn) {
-    auto buffer = gl::Buffer::create(fn);
-    auto vertex_array = gl::VertexArray::create(fn);
-    if (!buffer || !vertex_array) {
-        return frustum::Error{"window::TextOverlay::create(): " + (!buffer ? buffer.error() : vertex_array.error())};
+    auto made = render::create_position_buffer(fn, "window::TextOverlay::create()");
+    if (!made) {
+        return made.take_error();
     }
-    fn.BindVertexArray(vertex_array->id());
-    fn.BindBuffer(GL_ARRAY_BUFFER, buffer->id());
-    fn.EnableVertexAttribArray(render::kPositionLocation);
-    fn.VertexAttribPointer(render::kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     fn.BindVertexArray(0);
     fn.BindBuffer(GL_ARRAY_BUFFER, 0);
-    return TextOverlay(fn, std::move(*buffer), std::move(*vertex_array));
+    return TextOverlay(fn, std::move(made->buffer), std::move(made->vertex_array));
 }
 
 frustum::Status TextOverlay::draw(const render::LineProgram& program, frustum::DepthRange gpu_depth,

@@ -10,45 +10,54 @@
 
 namespace frustum {
 
-template <class T>
-Containment classify(const FrustumPlanes<T>& planes, const Aabb<T>& box) {
+namespace {
+
+// The loop of both tests: side(plane) says where the volume is against one
+// plane (Outside: wholly behind it, Intersecting: across it, Inside: in
+// front); absent planes (an infinite far) are skipped.
+template <class T, class Side>
+Containment classify_by_planes(const FrustumPlanes<T>& planes, const Side& side) {
     bool inside = true;
     for (const auto& plane : planes.as_array()) {
         if (!plane) {
             continue;
         }
-        const Vec3<T> n = plane->normal();
+        const Containment against = side(*plane);
+        if (against == Containment::Outside) {
+            return Containment::Outside;
+        }
+        inside = inside && against == Containment::Inside;
+    }
+    return inside ? Containment::Inside : Containment::Intersecting;
+}
+
+} // namespace
+
+template <class T>
+Containment classify(const FrustumPlanes<T>& planes, const Aabb<T>& box) {
+    return classify_by_planes(planes, [&box](const Plane<T>& plane) {
+        const Vec3<T> n = plane.normal();
         // p-vertex: the corner farthest along n; n-vertex: the nearest.
         const Vec3<T> p(n.x >= T(0) ? box.max.x : box.min.x, n.y >= T(0) ? box.max.y : box.min.y,
                         n.z >= T(0) ? box.max.z : box.min.z);
         const Vec3<T> q(n.x >= T(0) ? box.min.x : box.max.x, n.y >= T(0) ? box.min.y : box.max.y,
                         n.z >= T(0) ? box.min.z : box.max.z);
-        if (plane->distance(p) < T(0)) {
+        if (plane.distance(p) < T(0)) {
             return Containment::Outside;
         }
-        if (plane->distance(q) < T(0)) {
-            inside = false;
-        }
-    }
-    return inside ? Containment::Inside : Containment::Intersecting;
+        return plane.distance(q) < T(0) ? Containment::Intersecting : Containment::Inside;
+    });
 }
 
 template <class T>
 Containment classify(const FrustumPlanes<T>& planes, const Sphere<T>& sphere) {
-    bool inside = true;
-    for (const auto& plane : planes.as_array()) {
-        if (!plane) {
-            continue;
-        }
-        const T d = plane->distance(sphere.center);
+    return classify_by_planes(planes, [&sphere](const Plane<T>& plane) {
+        const T d = plane.distance(sphere.center);
         if (d < -sphere.radius) {
             return Containment::Outside;
         }
-        if (d < sphere.radius) {
-            inside = false;
-        }
-    }
-    return inside ? Containment::Inside : Containment::Intersecting;
+        return d < sphere.radius ? Containment::Intersecting : Containment::Inside;
+    });
 }
 
 namespace {

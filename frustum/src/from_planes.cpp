@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace frustum {
 
@@ -223,24 +224,32 @@ Result<RowsAndK<T>> rows_through(const SidePlanes<T>& planes, const Vec3<T>* far
 
 namespace detail {
 
-template <class T>
-Result<MatrixPair<T>> from_planes_points(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
-                                         DepthRange depth) {
+// rows_through()'s rows and K_n made into the pair with its inverse
+// (assemble()), or with kMatrixOnly into the matrix alone (matrix_of()).
+template <class T, bool kMatrixOnly>
+Result<std::conditional_t<kMatrixOnly, Mat4<T>, MatrixPair<T>>> through_far_points(
+    const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count, DepthRange depth) {
     const auto found = rows_through(planes, far_points, count, depth);
     if (!found) {
         return found.take_error();
     }
-    return assemble(found->rows, found->k_near, depth, "from_planes");
+    if constexpr (kMatrixOnly) {
+        return matrix_of(found->rows, found->k_near, depth);
+    } else {
+        return assemble(found->rows, found->k_near, depth, "from_planes");
+    }
+}
+
+template <class T>
+Result<MatrixPair<T>> from_planes_points(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
+                                         DepthRange depth) {
+    return through_far_points<T, false>(planes, far_points, count, depth);
 }
 
 template <class T>
 Result<Mat4<T>> from_planes_matrix(const SidePlanes<T>& planes, const Vec3<T>* far_points, std::size_t count,
                                    DepthRange depth) {
-    const auto found = rows_through(planes, far_points, count, depth);
-    if (!found) {
-        return found.take_error();
-    }
-    return matrix_of(found->rows, found->k_near, depth);
+    return through_far_points<T, true>(planes, far_points, count, depth);
 }
 
 } // namespace detail
