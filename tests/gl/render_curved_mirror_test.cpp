@@ -44,10 +44,7 @@ render::TracedFrame trace(const render::Cameras& cameras, float sagitta_m) {
 TEST_SUITE("gl") {
 
 TEST_CASE("a flat cap (sagitta 0) reproduces the planar mirror rectangle") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     auto planar = render_test::options();
     planar.mirror_method = render::MirrorMethod::Rectangle;
@@ -82,10 +79,7 @@ TEST_CASE("a flat cap (sagitta 0) reproduces the planar mirror rectangle") {
 }
 
 TEST_CASE("the curved mirror's error against the ray-traced reflection falls with the patch count") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto traced = trace(cameras, 0.3f);
     REQUIRE(traced.mirror_pixels > 1000);
@@ -113,10 +107,7 @@ TEST_CASE("the curved mirror's error against the ray-traced reflection falls wit
 }
 
 TEST_CASE("the red marker behind the mirror never shows in the curved mirror") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     for (float sagitta_m : {0.0f, 0.3f, 0.6f}) {
         for (int patches : {1, 4, 16}) {
@@ -132,10 +123,7 @@ TEST_CASE("the red marker behind the mirror never shows in the curved mirror") {
 }
 
 TEST_CASE("a patch without a frustum shows the clear colour") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     // Sagitta 0.9 m as one patch: too wide for one frustum (see
     // render_curved_geometry_test.cpp).
@@ -149,10 +137,7 @@ TEST_CASE("a patch without a frustum shows the clear colour") {
 TEST_CASE("no GL object outlives a renderer that drew the curved mirror") {
     const int before = gl::live_object_count();
     {
-        auto r = render_test::make_any_renderer();
-        if (!r) {
-            return;
-        }
+        RENDER_TEST_ANY_RENDERER(r);
         const auto cameras = render_test::showcase_cameras();
         for (int patches : {1, 7, 16}) {
             r->render(render::Effect::Curved, cameras, curved_options(patches, 0.3f));

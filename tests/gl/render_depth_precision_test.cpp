@@ -95,10 +95,7 @@ struct DepthProbe {
 TEST_SUITE("gl") {
 
 TEST_CASE("metres per depth step: the pair's prediction is what the GPU stores") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const render::DepthPolicy depth = render_test::apply_depth_policy(*r);
     const bool clip_control = depth.gpu_range() == frustum::DepthRange::ZeroToOne;
     const gl::Functions& fn = r->env->fn;

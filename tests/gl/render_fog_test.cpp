@@ -147,10 +147,7 @@ TEST_CASE("the main view's fog is the fog of the CPU's distance along each pixel
 
 
 TEST_CASE("the fogged reflection is the fogged mirrored scene; decoded without the oblique plane it is not") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     REQUIRE(render_test::count(mask) > 500);

@@ -35,10 +35,7 @@ bool yellow_near(const image::Image& picture, glm::vec2 at_px, float radius_px) 
 TEST_SUITE("gl") {
 
 TEST_CASE("the frustum view's yellow edges pass through the main frustum's corners as the overview sees them") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto o = render_test::options();
     const image::Image picture = r->render(render::Effect::Frustum, cameras, o);

@@ -59,10 +59,7 @@ double mean_abs(const image::Image& a, const image::Image& b) {
 TEST_SUITE("gl") {
 
 TEST_CASE("jitter: the mean of 8 Halton(2,3)-jittered renders matches a 4x4 supersampled render") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     constexpr int kW = render_test::kWidthPx, kH = render_test::kHeightPx;
     const render::Cameras cameras = render_test::showcase_cameras(kW, kH);
     for (const render::Effect effect : {render::Effect::Plain, render::Effect::Mirror}) {

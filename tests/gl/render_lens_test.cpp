@@ -94,10 +94,7 @@ TEST_CASE("the showcase lens tiles keep the scene up to the camera's far distanc
 }
 
 TEST_CASE("the lens with power 1 is the plain frame") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const LensSetup setup = lens_setup(1.0f, 8);
     const image::Image plain = plain_without_disc(*r, setup.draw);
     auto o = render_test::options();
@@ -126,10 +123,7 @@ TEST_CASE("the lens with power 1 is the plain frame") {
 }
 
 TEST_CASE("the tiled lens converges to the per-pixel reference as the grid grows") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     LensSetup setup = lens_setup(2.0f, 4);
     const image::Image exact = reference(*r, setup.draw);
     const render_test::Mask all(exact.rgba.size() / 4, true);

@@ -28,10 +28,7 @@ bool rectangle_agrees(const render_test::MaskedDiff& d) {
 TEST_SUITE("gl") {
 
 TEST_CASE("the mirror's pixels are its quad's projection, less what stands in front of it") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto o = render_test::options();
     const render_test::Mask quad =
@@ -51,10 +48,7 @@ TEST_CASE("the mirror's pixels are its quad's projection, less what stands in fr
 }
 
 TEST_CASE("the mirror shows the mirrored scene") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     REQUIRE(render_test::count(mask) > 500); // the mirror is well in view
@@ -79,10 +73,7 @@ TEST_CASE("the mirror shows the mirrored scene") {
 }
 
 TEST_CASE("the marker behind the mirror never shows in it, unless the near plane is not the mirror") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     for (auto method : {render::MirrorMethod::Oblique, render::MirrorMethod::Rectangle}) {
@@ -103,10 +94,7 @@ TEST_CASE("the marker behind the mirror never shows in it, unless the near plane
 }
 
 TEST_CASE("the exact mirror rectangle shows the mirrored scene") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     auto o = render_test::options();
@@ -125,10 +113,7 @@ TEST_CASE("the exact mirror rectangle shows the mirrored scene") {
 }
 
 TEST_CASE("the oblique mirror and the exact mirror rectangle agree") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     auto o = render_test::options();

@@ -60,10 +60,7 @@ EdgeStats edge_stats(const image::Image& single, const image::Image& multi, cons
 TEST_SUITE("gl") {
 
 TEST_CASE("MSAA: 4 samples by default where the context has them; a count it cannot give is refused") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const gl::Functions& fn = r->env->fn;
     const int max = gl::max_samples(fn);
     MESSAGE("GL_MAX_SAMPLES=" << max);

@@ -53,10 +53,7 @@ double fraction_over(const render_test::MaskedDiff& d) { return static_cast<doub
 TEST_SUITE("gl") {
 
 TEST_CASE("eq. 36 with the camera's own six planes renders the plain frame") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto p = frustum::planes(cameras.main.pair);
     REQUIRE(p.far.has_value());
@@ -87,10 +84,7 @@ TEST_CASE("eq. 36 with the camera's own six planes renders the plain frame") {
 }
 
 TEST_CASE("the crossed-slits frame matches the ray cast once culled and subdivided") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras(kCastWidthPx, kCastHeightPx);
     const auto f = crossed_slits(cameras);
     const auto geometry = render::WorldGeometry::from_scene(render_test::showcase());
@@ -117,10 +111,7 @@ TEST_CASE("the crossed-slits frame matches the ray cast once culled and subdivid
 }
 
 TEST_CASE("eq. 36's zero denominators: naive tears the frame, culling leaves holes, subdivision closes them") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras(kCastWidthPx, kCastHeightPx);
     const auto f = crossed_slits(cameras);
     const render::NonAffineOptions defaults;

@@ -233,10 +233,7 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
 }
 
 TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at its reflected depth's") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     constexpr int kEyeW = render_test::kWidthPx, kH = render_test::kHeightPx;
     const render::Cameras cameras = render_test::showcase_cameras(kEyeW, kH);
     // A wide base (1 m) so the reflection's disparity is several pixels at

@@ -6,10 +6,7 @@ TEST_SUITE("gl") {
 TEST_CASE("no GL object outlives a renderer") {
     const int before = gl::live_object_count();
     {
-        auto r = render_test::make_any_renderer();
-        if (!r) {
-            return;
-        }
+        RENDER_TEST_ANY_RENDERER(r);
         CHECK(gl::live_object_count() > before);
         const auto cameras = render_test::showcase_cameras();
         for (render::Effect effect : render::kAllEffects) {

@@ -78,6 +78,13 @@ inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& 
     return env ? renderer_on(std::move(env), scene) : nullptr;
 }
 
+// `auto name = make_any_renderer();`, the test case ending there (its skip
+// recorded) when neither EGL nor OSMesa works.
+#define RENDER_TEST_ANY_RENDERER(name)                   \
+    auto name = render_test::make_any_renderer();        \
+    if (!name)                                           \
+    return
+
 // What frustum-demo render derives for a scene it has never seen: a mirror
 // placed for the default camera when the scene has none (added to `scene`), the default camera, a
 // renderer on `env`, and options() at the given size with the curved

@@ -7,10 +7,7 @@
 TEST_SUITE("gl") {
 
 TEST_CASE("stitched tiles equal the full frame") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const image::Image full = r->render(render::Effect::Plain, cameras, render_test::options());
     for (const auto& grid : {std::pair{2, 2}, std::pair{3, 2}, std::pair{4, 4}}) {
@@ -41,10 +38,7 @@ TEST_CASE("stitched tiles equal the full frame") {
 }
 
 TEST_CASE("--tile-borders paints the seams between tiles and nothing else") {
-    auto r = render_test::make_any_renderer();
-    if (!r) {
-        return;
-    }
+    RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     auto o = render_test::options();
     o.tile_columns = 3;
