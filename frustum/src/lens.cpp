@@ -1,5 +1,6 @@
 #include "frustum/lens.hpp"
 
+#include "frustum/detail/depth_planes.hpp"
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/lens_matrices.hpp"
 #include "frustum/detail/lens_tile_assembly.hpp"
@@ -63,7 +64,7 @@ Status lens_grid(const MatrixPair<T>& camera, const Lens<T>& lens, int width_px,
     // How much farther the far plane is than the near plane, seen from the
     // eye: |F(eye)| / |F.xyz| over |N(eye)| / |N.xyz| (raw planes, no
     // normalization of the other four).
-    const DepthPlanes<T> camera_planes = raw_depth_planes(camera);
+    const detail::DepthPlanes<T> camera_planes = detail::raw_depth_planes(camera);
     if (!camera_planes.far) {
         return failed(detail::error_text("lens_tiles", "needs a finite far plane", ""));
     }

@@ -1,5 +1,6 @@
 #include "frustum/queries.hpp"
 
+#include "frustum/detail/depth_planes.hpp"
 #include "frustum/detail/errors.hpp"
 #include "frustum/detail/simd4.hpp"
 #include "frustum/detail/tolerances.hpp"
@@ -8,6 +9,8 @@
 #include <cmath>
 
 namespace frustum {
+
+namespace detail {
 
 template <class T>
 DepthPlanes<T> raw_depth_planes(const MatrixPair<T>& pair) {
@@ -25,11 +28,13 @@ DepthPlanes<T> raw_depth_planes(const MatrixPair<T>& pair) {
     return p;
 }
 
+} // namespace detail
+
 template <class T>
 FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair) {
     const Mat4<T>& m = pair.matrix();
     const Vec4<T> m0 = row(m, 0), m1 = row(m, 1), m3 = row(m, 3);
-    DepthPlanes<T> depth = raw_depth_planes(pair);
+    detail::DepthPlanes<T> depth = detail::raw_depth_planes(pair);
     FrustumPlanes<T> p;
     p.left = Plane<T>(m3 + m0);   // eq. 1: x >= -w
     p.right = Plane<T>(m3 - m0);  //        x <= w
@@ -204,7 +209,7 @@ Result<NearPlaneFrame<T>> near_plane_frame(const MatrixPair<T>& camera) {
 
 #define FRUSTUM_INSTANTIATE(T)                                              \
     template FrustumPlanes<T> raw_planes(const MatrixPair<T>&);             \
-    template DepthPlanes<T> raw_depth_planes(const MatrixPair<T>&);         \
+    template detail::DepthPlanes<T> detail::raw_depth_planes(const MatrixPair<T>&); \
     template FrustumPlanes<T> planes(const MatrixPair<T>&);                 \
     template DivisionPlanes<T> division_planes(const MatrixPair<T>&);       \
     template Vec4<T> clip_corner<T>(int, DepthRange);                       \

@@ -35,16 +35,6 @@ FrustumPlanes<T> planes(const MatrixPair<T>& pair);
 template <class T>
 FrustumPlanes<T> raw_planes(const MatrixPair<T>& pair);
 
-// Only the near and far planes of raw_planes() (the same rows, same bits):
-// for callers that need the depth extent and not the sides (lens_tiles).
-template <class T>
-struct DepthPlanes {
-    Plane<T> near;
-    std::optional<Plane<T>> far; // absent for an infinite far plane (erratum 9)
-};
-template <class T>
-DepthPlanes<T> raw_depth_planes(const MatrixPair<T>& pair);
-
 // Division planes through the centre D (§3.1, eq. 4): Dx = m0, Dy = m1,
 // Dz = s (m2 - z_mid m3), z_mid the centre of the depth range. Dz is
 // positive towards the far plane. Not normalized (Dz of an orthographic or
