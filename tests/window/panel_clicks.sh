@@ -6,7 +6,8 @@
 #   b.png  after choosing "lens" in the --effect list
 #   c.png  after clicking the --lens-power slider a quarter along (about 0.5)
 #   d.png  after clicking its left end (0: refused by the row, error in the panel)
-# and quits with Esc. The widget positions are those of the panel's fixed
+# each with the window's state line beside it (a.state .. d.state: the
+# effect and the lens power the window took), and quits with Esc. The widget positions are those of the panel's fixed
 # layout (ImGui's default font and style, the panel at the window's left).
 # Usage: panel_clicks.sh FRUSTUM_DEMO OUT_DIR
 set -euo pipefail
@@ -20,9 +21,11 @@ settle
 shot a.png
 click 100 76 # the --effect list (below --camera)
 click 40 185 # its sixth entry: lens
+wait_state ' effect=lens '
 settle
 shot b.png
 click 75 351 # --lens-power, a quarter along
+wait_state ' lens-power=0[.]'
 settle
 shot c.png
 click 36 351 # its left end: 0

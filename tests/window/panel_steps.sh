@@ -2,47 +2,86 @@
 # scene_clicks.sh), sourced after they set $demo (frustum-demo), $out (the
 # folder for screenshots) and $script (their name, for messages).
 #
+# They wait for the window's state, never for a fixed time: the window
+# runs with FRUSTUM_WINDOW_STATE=$out/state, which it rewrites after every
+# frame with "frame=N keys=K " and its settings (window::state_line()).
+# Every wait gives up after $wait_limit_s (the run fails, saying what it
+# waited for); a loaded machine only takes longer.
+#
 # open_window ARGS...: starts `frustum-demo window ARGS...` in the
-# background ($pid, killed if the script fails) and finds its window ($wid);
+# background ($pid, killed if the script fails), finds its window ($wid)
+# and waits for its first frame;
 # finish: Esc, and waits for the program to end.
+wait_limit_s=${wait_limit_s:-120}
+state_file=$out/state
 open_window() {
-  "$demo" window "$@" &
+  rm -f "$state_file" "$state_file.log"
+  FRUSTUM_WINDOW_STATE=$state_file "$demo" window "$@" &
   pid=$!
   trap 'kill $pid 2>/dev/null || true' EXIT
-  wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^frustum' | head -1)
+  wid=$(timeout "$wait_limit_s" xdotool search --sync --onlyvisible --name '^frustum' | head -1)
+  wait_state 'frame=[0-9]'
 }
 finish() {
   xdotool key --window "$wid" Escape
+  timeout "$wait_limit_s" tail --pid="$pid" -f /dev/null || { echo "$script: the window did not close" >&2; return 1; }
   wait "$pid"
   trap - EXIT
 }
+# poll CONDITION...: runs CONDITION until it succeeds, at most $wait_limit_s.
+poll() {
+  local deadline=$((SECONDS + wait_limit_s))
+  until "$@"; do
+    if [ "$SECONDS" -ge "$deadline" ]; then return 1; fi
+    sleep 0.02
+  done
+}
+state_matches() { grep -Eq -- "$1" "$state_file" 2>/dev/null; }
+# wait_state REGEX: until the window's state line matches REGEX (e.g. ' effect=lens ').
+wait_state() {
+  poll state_matches "$1" || { echo "$script: the state never matched '$1': $(cat "$state_file" 2>/dev/null)" >&2; return 1; }
+}
+frame_now() { sed -n 's/^frame=\([0-9]*\) .*/\1/p' "$state_file" 2>/dev/null; }
+frames_past() { local now; now=$(frame_now); [ -n "$now" ] && [ "$now" -ge "$1" ]; }
+# wait_frames N: until the window has drawn N more frames (so that the
+# events sent before were taken in a frame, and its outcome drawn).
+wait_frames() {
+  local target=$(($(frame_now) + $1))
+  poll frames_past "$target" || { echo "$script: the window stopped drawing (frame $(frame_now), waited for $target)" >&2; return 1; }
+}
 #
-# settle: the pointer leaves the panel (no tooltip over the view), then the
-# window is read until two reads 0.3 s apart agree (nothing moves in the
-# window once a click is drawn: the live numbers that change every frame lie
-# below the scripts' windows; a loaded machine only takes longer).
+# settle: the pointer leaves the panel (no tooltip over the view), frames
+# are drawn after it, then the window is read until two reads with frames
+# drawn between them agree (nothing moves in the window once a click is
+# drawn: the live numbers that change every frame lie below the scripts'
+# windows). A scene loaded in a frame is on screen in the frames after it.
 settle() {
   xdotool mousemove --window "$wid" 470 350
-  local last="" now
-  for _ in $(seq 40); do
-    sleep 0.3
+  wait_frames 3
+  local last="" now deadline=$((SECONDS + wait_limit_s))
+  while [ "$SECONDS" -lt "$deadline" ]; do
     now=$(xwd -id "$wid" -silent | md5sum)
     if [ "$now" = "$last" ]; then return 0; fi
     last=$now
+    wait_frames 2
   done
   echo "$script: the window did not settle" >&2
   return 1
 }
-shot() { import -window "$wid" "$out/$1"; }
-# A click as three steps with time between them, so that press and release
-# land in different frames even on a loaded machine (ImGui 1.86 keeps only
-# the button's state per frame: a press and release within one frame are
-# lost, and a release it misses lets the slider follow the pointer away).
+# shot NAME.png: the screenshot, and the state line beside it (NAME.state).
+shot() {
+  import -window "$wid" "$out/$1"
+  cp "$state_file" "$out/${1%.png}.state"
+}
+# A click as three steps with frames drawn between them, so that press and
+# release land in different frames (ImGui 1.86 keeps only the button's
+# state per frame: a press and release within one frame are lost, and a
+# release it misses lets the slider follow the pointer away).
 click() {
   xdotool mousemove --window "$wid" "$1" "$2"
-  sleep 0.4
+  wait_frames 2
   xdotool mousedown 1
-  sleep 0.4
+  wait_frames 2
   xdotool mouseup 1
-  sleep 0.4
+  wait_frames 2
 }

@@ -17,7 +17,10 @@
 #include <demo/window_panel.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include <string>
 #include <vector>
@@ -41,7 +44,26 @@ image::Image panel_part(const image::Image& shot) { return crop(shot, 0, 0, kPan
 struct ScriptShots {
     window_test::Child child;
     image::Image a, b, c, d; // the script's a.png .. d.png
+    std::string a_state, b_state, c_state, d_state; // the window's state line at each (FRUSTUM_WINDOW_STATE)
 };
+
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream file(path);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// The value of `name=` in a state line (window::state_line()); empty when absent.
+std::string state_field(const std::string& line, const std::string& name) {
+    std::istringstream words(line);
+    for (std::string word; words >> word;) {
+        if (word.rfind(name + "=", 0) == 0) {
+            return word.substr(name.size() + 1);
+        }
+    }
+    return {};
+}
 
 // tests/window/<script> FRUSTUM_DEMO OUT_DIR args... under xvfb-run, which
 // must end with 0, and its four screenshots; empty (after recording a skip) when
@@ -65,6 +87,10 @@ std::optional<ScriptShots> run_panel_script(const std::string& script, const Tem
     shots.b = read(dir / "b.png");
     shots.c = read(dir / "c.png");
     shots.d = read(dir / "d.png");
+    shots.a_state = slurp(dir / "a.state");
+    shots.b_state = slurp(dir / "b.state");
+    shots.c_state = slurp(dir / "c.state");
+    shots.d_state = slurp(dir / "d.state");
     REQUIRE(shots.a.width == 480);
     return shots;
 }
@@ -105,11 +131,23 @@ TEST_CASE("clicks on the panel change the effect and the lens power; a refused v
     // The effect list's "lens": the view is render's lens effect.
     check_similar(beside_panel(b), beside_panel(render_offscreen(dir, "lens", "480x360")), "lens chosen");
     CHECK(pixels_differing(beside_panel(a), beside_panel(b)) > kDiffers);
-    // The --lens-power slider: another magnification.
+    CHECK(state_field(child->a_state, "effect") == "plain");
+    CHECK(state_field(child->b_state, "effect") == "lens");
+    CHECK(state_field(child->b_state, "lens-power") == "2");
+    // The --lens-power slider, (0, 2] across its width, clicked a quarter
+    // along: the window took 0.5 to within 0.02 (measured 0.493: the click's
+    // pixel is not the exact quarter; 0.02 is about three times that), and
+    // drew another magnification.
+    const std::string power = state_field(child->c_state, "lens-power");
+    REQUIRE(!power.empty());
+    INFO("lens power after the click: " << power);
+    CHECK(std::abs(std::stod(power) - 0.5) <= 0.02);
+    CHECK(state_field(child->c_state, "effect") == "lens");
     CHECK(pixels_differing(beside_panel(b), beside_panel(c)) > kDiffers);
     // Its left end, 0, is refused by the row ("--lens-power must be a number
     // in (0, 2]"): the panel shows the message, the view stays.
     check_similar(beside_panel(d), beside_panel(c), "refused value");
+    CHECK(state_field(child->d_state, "lens-power") == power);
     CHECK(pixels_differing(crop(c, 0, 20, kPanelPx, 45), crop(d, 0, 20, kPanelPx, 45)) > kDiffers); // the message on top
 }
 

@@ -30,7 +30,7 @@ settle
 shot b.png
 click 150 375 # the path field: a click selects all of it
 xdotool type --window "$wid" --delay 60 "$missing"
-sleep 0.4
+wait_frames 2
 xdotool key --window "$wid" Return
 settle
 shot c.png
