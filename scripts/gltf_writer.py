@@ -16,6 +16,18 @@ _FORMAT = {BYTE: "b", UBYTE: "B", SHORT: "h", USHORT: "H", UINT: "I", FLOAT: "f"
 _SIZE = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
 
+def _with_given(fields, **optional):
+    """`fields` with each optional field that is not None added, in order."""
+    fields.update((key, value) for key, value in optional.items() if value is not None)
+    return fields
+
+
+def _bound(acc, values, size):
+    """Adds the per-component min and max of `values` (`size` components an element)."""
+    acc["min"] = [min(values[i::size]) for i in range(size)]
+    acc["max"] = [max(values[i::size]) for i in range(size)]
+
+
 def png_rgba(width, height, pixels):
     """pixels: rows top to bottom of (r, g, b, a) bytes."""
     raw = b"".join(b"\x00" + bytes(c for p in row for c in p) for row in pixels)
@@ -60,12 +72,8 @@ class Gltf:
         self._align()
         offset = len(self.data)
         self.data += payload
-        v = {"buffer": 0, "byteOffset": offset, "byteLength": len(payload)}
-        if stride is not None:
-            v["byteStride"] = stride
-        if target is not None:
-            v["target"] = target
-        self.j["bufferViews"].append(v)
+        self.j["bufferViews"].append(_with_given({"buffer": 0, "byteOffset": offset, "byteLength": len(payload)},
+                                                 byteStride=stride, target=target))
         return len(self.j["bufferViews"]) - 1
 
     def accessor(self, values, kind, component=FLOAT, normalized=False, target=None, bounds=None, stride=None):
@@ -88,8 +96,7 @@ class Gltf:
         if bounds is None:
             bounds = kind == "VEC3" and component == FLOAT
         if bounds:
-            acc["min"] = [min(values[i::size]) for i in range(size)]
-            acc["max"] = [max(values[i::size]) for i in range(size)]
+            _bound(acc, values, size)
         self.j["accessors"].append(acc)
         return len(self.j["accessors"]) - 1
 
@@ -112,8 +119,7 @@ class Gltf:
         for (kind, values), size in zip(columns, sizes):
             acc = {"bufferView": view, "byteOffset": offset, "componentType": FLOAT, "count": count, "type": kind}
             if kind == "VEC3":
-                acc["min"] = [min(values[i::3]) for i in range(3)]
-                acc["max"] = [max(values[i::3]) for i in range(3)]
+                _bound(acc, values, 3)
             self.j["accessors"].append(acc)
             out.append(len(self.j["accessors"]) - 1)
             offset += 4 * size
@@ -126,12 +132,7 @@ class Gltf:
         return len(self.j["materials"]) - 1
 
     def mesh(self, primitives, weights=None, name=None):
-        m = {"primitives": primitives}
-        if weights is not None:
-            m["weights"] = weights
-        if name is not None:
-            m["name"] = name
-        self.j["meshes"].append(m)
+        self.j["meshes"].append(_with_given({"primitives": primitives}, weights=weights, name=name))
         return len(self.j["meshes"]) - 1
 
     def node(self, fields, root=True):

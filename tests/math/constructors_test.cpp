@@ -73,8 +73,7 @@ TEST_CASE_TEMPLATE("perspective: literal matrix and inverse of the 90-degree lan
 
 TEST_CASE_TEMPLATE("perspective: landmarks per depth range (near -> z_near, far -> z_far, direction -> z_far)", T,
                    float, double) {
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const T zn = frustum::clip_z_near<T>(depth), zf = frustum::clip_z_far<T>(depth);
         const auto pair = frustum::perspective<T>(T(1.1), T(1.5), T(0.5), T(40), depth);
         REQUIRE(pair.ok());
@@ -101,7 +100,7 @@ TEST_CASE_TEMPLATE("perspective: landmarks per depth range (near -> z_near, far 
         // ... and a far but finite point does not reach it.
         const Vec4<T> far_point = inf->matrix() * Vec4<T>(0, 0, -1000, 1);
         CHECK(std::abs(far_point.z / far_point.w - zf) > T(0));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("perspective equals glm's perspectiveRH_ZO / perspectiveRH_NO / infinitePerspectiveRH", T, float,
@@ -218,14 +217,10 @@ TEST_CASE_TEMPLATE("M * M^-1 = I and closed-form inverse == glm::inverse over 30
     // 1e-12 double); and M * M^-1 - I is bounded componentwise by
     // 32 eps (|M| |M^-1|) (see inverse_residual; measured <= 6 eps), which
     // is what two matrices with a few ulp of error per entry give.
-    Random rng(12);
-    for (int i = 0; i < 3000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(12, 3000, [&](Random&, const CameraSpec&, const MatrixPair<T>& pair) {
         CHECK(column_relative_diff(pair.inverse(), glm::inverse(glm::dmat4(pair.matrix()))) <= loose<T>());
         CHECK(inverse_residual(pair) <= 32 * eps<T>());
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("look_at: equals glm::lookAtRH, its inverse equals glm::inverse, landmark", T, float, double) {
@@ -326,11 +321,7 @@ TEST_CASE_TEMPLATE("with_depth_range: equals direct construction, round trips, s
     }
     // Random rotated cameras: there and back again, and the six world
     // planes do not move.
-    Random rng(14);
-    for (int i = 0; i < 300; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(14, 300, [&](Random& rng, const CameraSpec& c, const MatrixPair<T>& pair) {
         const DepthRange other = all_depth_ranges[(int(c.depth) + 1 + rng.index(2)) % 3];
         const MatrixPair<T> there = pair.with_depth_range(other);
         const MatrixPair<T> back = there.with_depth_range(c.depth);
@@ -346,7 +337,7 @@ TEST_CASE_TEMPLATE("with_depth_range: equals direct construction, round trips, s
             CHECK(*p1.far == close_abs(*p0.far, loose<T>() * (1 + max_abs(*p0.far))));
         }
         CHECK(p1.left == close_abs(p0.left, loose<T>() * (1 + max_abs(p0.left))));
-    }
+    });
 }
 
 TEST_CASE("cast: double -> float equals the float constructor; flags carried") {

@@ -51,12 +51,8 @@ CropRect<T> as(const CropRect<double>& r) {
 TEST_SUITE("math") {
 
 TEST_CASE("crop: the sparse form equals the explicit cropMat product of eq. 14") {
-    Random rng(91);
-    for (int i = 0; i < 1000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<double> pair = make<double>(c);
+    for_each_random_camera<double>(91, 1000, [&](Random& rng, const CameraSpec&, const MatrixPair<double>& pair) {
         const CropRect<double> rect = random_rect(rng);
-        INFO(c.text());
         const glm::dmat4 crop_mat = paper_crop_mat(rect), inv_crop_mat = paper_inv_crop_mat(rect);
         // The paper's two matrices are inverses of each other.
         CHECK(glm::dmat4(crop_mat * inv_crop_mat) == close_abs(glm::dmat4(1), 1e-12));
@@ -70,7 +66,7 @@ TEST_CASE("crop: the sparse form equals the explicit cropMat product of eq. 14")
         CHECK(frustum::row(cropped->matrix(), 3) == frustum::row(pair.matrix(), 3));
         CHECK(cropped->inverse()[2] == pair.inverse()[2]);
         CHECK(inverse_residual(*cropped) <= 256 * eps<double>());
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of the landmark are off_axis windows", T,
@@ -78,8 +74,7 @@ TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of t
     // 800 x 600 pixels over the landmark's near window [-1, 1]^2 at near 1.
     // Y = 0 with height 300 is the BOTTOM half, window [-1, 1] x [-1, 0]:
     // y' = h y + (h - 1 - 2 Y/bh) w = 2 y + w, so y = -1 -> -1, y = 0 -> 1.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto base = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
         REQUIRE(base.ok());
         const auto bottom = frustum::crop(*base, CropRect<T>{0, 0, 800, 300, 800, 600});
@@ -103,7 +98,7 @@ TEST_CASE_TEMPLATE("crop: offset from the bottom-left; halves and quadrants of t
         REQUIRE(whole.ok());
         CHECK(whole->matrix() == base->matrix());
         CHECK(whole->inverse() == base->inverse());
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("crop then uncrop returns the original; flags and depth carried", T, float, double) {
@@ -151,10 +146,7 @@ TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
     // falls in exactly one tile's [-1, 1)^2 (half-open so shared edges
     // count once), at the pixel it should, and each tile pair is a
     // componentwise inverse.
-    Random rng(93);
-    for (int i = 0; i < 200; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
+    for_each_random_camera<T>(93, 200, [&](Random& rng, const CameraSpec& c, const MatrixPair<T>& pair) {
         const int w = 1 + rng.index(1920), h = 1 + rng.index(1080);
         const int cols = 1 + rng.index(std::min(w, 8)), rows = 1 + rng.index(std::min(h, 8));
         CAPTURE(w);
@@ -190,7 +182,7 @@ TEST_CASE_TEMPLATE("crop_tiles cover the image exactly", T, float, double) {
             }
             CHECK(hits == 1);
         }
-    }
+    });
 }
 
 // Bit for bit where the compiler does not fuse multiply-adds (x86-64,

@@ -77,10 +77,7 @@ TEST_CASE_TEMPLATE("classify: the conservative false \"intersecting\" near a fru
 }
 
 TEST_CASE_TEMPLATE("classify: never Outside for a box that holds a point of the frustum", T, float, double) {
-    Random rng(7302);
-    for (int i = 0; i < 500; ++i) {
-        const CameraSpec spec = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(spec);
+    for_each_random_camera<T>(7302, 500, [&](Random& rng, const CameraSpec& spec, const MatrixPair<T>& pair) {
         const auto planes = frustum::planes(pair);
         const glm::dvec4 h = glm::dmat4(pair.inverse()) * random_clip_point(rng, spec.depth, 0.01);
         const glm::dvec3 p = glm::dvec3(h) / h.w;
@@ -88,7 +85,7 @@ TEST_CASE_TEMPLATE("classify: never Outside for a box that holds a point of the 
         const glm::dvec3 hi = p + glm::dvec3(rng.uniform(0, 5), rng.uniform(0, 5), rng.uniform(0, 5));
         INFO("camera: ", spec.text());
         CHECK(frustum::classify(planes, Aabb<T>{Vec3<T>(lo), Vec3<T>(hi)}) != Containment::Outside);
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("culling_pair (mirror): near = mirror plane, far = the camera's own far distance", T, float,

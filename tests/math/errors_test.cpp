@@ -35,6 +35,18 @@ SidePlanes<T> landmark_planes() {
     return {p.left, p.right, p.bottom, p.top, p.near};
 }
 
+// Calls check(q) six times, q being the bounds `o` with bound i (captured)
+// replaced by `bad`.
+template <class T, class Check>
+void with_each_bound_replaced(const T (&o)[6], T bad, Check check) {
+    for (int i = 0; i < 6; ++i) {
+        T q[6] = {o[0], o[1], o[2], o[3], o[4], o[5]};
+        q[i] = bad;
+        CAPTURE(i);
+        check(q);
+    }
+}
+
 } // namespace
 
 TEST_SUITE("math") {
@@ -100,24 +112,18 @@ TEST_CASE_TEMPLATE("NaN and infinity in every constructor parameter", T, float, 
             CHECK((has(r.error(), "finite") || has(r.error(), "(0, pi)")));
         }
         // off_axis(l, r, b, t, near, far)
-        T o[6] = {-1, 1, -1, 1, 1, 10};
-        for (int i = 0; i < 6; ++i) {
-            T q[6] = {o[0], o[1], o[2], o[3], o[4], o[5]};
-            q[i] = bad;
-            CAPTURE(i);
+        const T o[6] = {-1, 1, -1, 1, 1, 10};
+        with_each_bound_replaced(o, bad, [&](const T (&q)[6]) {
             const auto r = frustum::off_axis<T>(q[0], q[1], q[2], q[3], q[4], q[5], d);
             REQUIRE_FALSE(r.ok());
             CHECK(has(r.error(), "finite"));
-        }
+        });
         // orthographic(l, r, b, t, near, far)
-        for (int i = 0; i < 6; ++i) {
-            T q[6] = {o[0], o[1], o[2], o[3], o[4], o[5]};
-            q[i] = bad;
-            CAPTURE(i);
+        with_each_bound_replaced(o, bad, [&](const T (&q)[6]) {
             const auto r = frustum::orthographic<T>(q[0], q[1], q[2], q[3], q[4], q[5], d);
             REQUIRE_FALSE(r.ok());
             CHECK(starts(r.error(), "frustum::orthographic(): all bounds must be finite, got left="));
-        }
+        });
         {
             const auto r = frustum::orthographic<T>(-1, 1, -1, 1, bad, 10, d);
             CHECK(r.error() == "frustum::orthographic(): all bounds must be finite, got left=-1 right=1 bottom=-1 "

@@ -32,8 +32,7 @@ TEST_CASE_TEMPLATE("from_planes: the landmark's planes and far corner give the l
     // The 90-degree camera's planes (see planes_test) and its far corner
     // C5 = (10, 10, -10). The rows come back scaled by 1/|L_raw| = 1/sqrt2
     // (planes are normalized inside), so compare up to a positive factor.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto pair = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
         REQUIRE(pair.ok());
         const auto rebuilt = frustum::from_planes(side_planes_of(*pair), Vec3<T>(10, 10, -10), depth);
@@ -47,7 +46,7 @@ TEST_CASE_TEMPLATE("from_planes: the landmark's planes and far corner give the l
         const auto again = frustum::from_planes(side_planes_of(*pair), Vec3<T>(-3, 7, -10), depth);
         REQUIRE(again.ok());
         CHECK(again->matrix() == close(rebuilt->matrix(), loose<T>()));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("from_planes rebuilds random perspective matrices up to a positive factor, every depth range", T,
@@ -92,8 +91,7 @@ TEST_CASE_TEMPLATE("from_planes_volume_growth: untilted near plane needs at leas
     // infinite far plane, far corners at w = 0. The paper's stop test never
     // fires (near corners are on N, so F.C_i = -m3.C_i whatever K_n); the
     // corrected one (far corners finite, in front) must grow K_n.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto pair = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
         REQUIRE(pair.ok());
         const auto grown = frustum::from_planes_volume_growth(side_planes_of(*pair), depth);
@@ -121,7 +119,7 @@ TEST_CASE_TEMPLATE("from_planes_volume_growth: untilted near plane needs at leas
         const auto none = frustum::from_planes_volume_growth(side_planes_of(*pair), depth, 0);
         REQUIRE_FALSE(none.ok());
         CHECK(none.error().find("no valid far plane within the iteration limit") != std::string::npos);
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("from_planes_volume_growth: random frustums with tilted near planes are valid, few steps", T, float,

@@ -5,13 +5,17 @@ using namespace mtest;
 
 namespace {
 
+// perspective(1 rad, 16:9, 0.1, 50) looking from (1, 2, 5) at the origin,
+// built (make: REQUIREd) and CHECKed valid.
 template <class T>
 MatrixPair<T> camera(DepthRange depth) {
-    const auto p = frustum::perspective<T>(T(1), T(16.0 / 9), T(0.1), T(50), depth);
-    const auto v = frustum::look_at<T>(Vec3<T>(1, 2, 5), Vec3<T>(0, 0, 0), Vec3<T>(0, 1, 0));
-    REQUIRE(p.ok());
-    REQUIRE(v.ok());
-    return frustum::compose(*p, *v);
+    CameraSpec c;
+    c.depth = depth;
+    c.fovy = 1, c.aspect = 16.0 / 9, c.near_m = 0.1, c.far_m = 50;
+    c.eye = {1, 2, 5}, c.target = {0, 0, 0}, c.up = {0, 1, 0};
+    const MatrixPair<T> pair = make<T>(c);
+    CHECK(frustum::validate(pair).valid());
+    return pair;
 }
 
 } // namespace

@@ -43,8 +43,7 @@ TEST_CASE_TEMPLATE("key points of the 90-degree landmark at E = (1, 2, 3) lookin
     const Vec4<T> centre(T(1 + 20.0 / 11), 2, 3, 1);
     // Corners and eye are 10..20 from the origin: loose() absolute.
     const double tol = loose<T>() * 20;
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto k = frustum::key_points(landmark_at_e<T>(T(10), depth));
         for (int i = 0; i < 8; ++i) {
             CAPTURE(i);
@@ -60,7 +59,7 @@ TEST_CASE_TEMPLATE("key points of the 90-degree landmark at E = (1, 2, 3) lookin
         CHECK(point(k.vanishing_y) == close_abs(Vec4<T>(0, 1, 0, 0), tol));
         CHECK(k.vanishing_x.w == 0);
         CHECK(k.vanishing_y.w == 0);
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("key points of the landmark with an infinite far plane", T, float, double) {
@@ -68,8 +67,7 @@ TEST_CASE_TEMPLATE("key points of the landmark with an infinite far plane", T, f
     // i.e. world (1, +-1, +-1)/sqrt(3) with the mapping above.
     const T s = T(1 / std::sqrt(3.0));
     const Vec4<T> far_dirs[4] = {{s, s, s, 0}, {s, s, -s, 0}, {s, -s, -s, 0}, {s, -s, s, 0}};
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto k = frustum::key_points(landmark_at_e<T>(infinite_far, depth));
         CHECK(point(k.corners[0]) == close_abs(Vec4<T>(2, 3, 4, 1), loose<T>() * 10));
         for (int i = 4; i < 8; ++i) {
@@ -79,15 +77,14 @@ TEST_CASE_TEMPLATE("key points of the landmark with an infinite far plane", T, f
         }
         // D: clip z_mid is eye depth 2n = 2 (the limit of 2nf/(n+f)).
         CHECK(point(k.center) == close_abs(Vec4<T>(3, 2, 3, 1), loose<T>() * 10));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("orthographic: the eye is at infinity, pointing away from the frustum", T, float, double) {
     // Box [-2, 2] x [-1, 1] x [-11, -1] seen from E = (1, 2, 3) along +x:
     // the projection direction is +x, the eye is the point at infinity
     // BEHIND the near plane: direction -x, w = 0.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto projection = frustum::orthographic<T>(-2, 2, -1, 1, 1, 11, depth);
         const auto view = frustum::look_at<T>({1, 2, 3}, {4, 2, 3}, {0, 1, 0});
         REQUIRE((projection.ok() && view.ok()));
@@ -103,7 +100,7 @@ TEST_CASE_TEMPLATE("orthographic: the eye is at infinity, pointing away from the
         CHECK(point(k.corners[6]) == close_abs(Vec4<T>(12, 1, 1, 1), loose<T>() * 10));
         CHECK(point(k.center) == close_abs(Vec4<T>(7, 2, 3, 1), loose<T>() * 10));
         CHECK(frustum::validate(pair).valid());
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("off-axis: vanishing points stay at infinity; an oblique near plane makes O2 finite", T, float,
@@ -112,8 +109,7 @@ TEST_CASE_TEMPLATE("off-axis: vanishing points stay at infinity; an oblique near
     // any off_axis/perspective matrix m2 = 0 is a plane z = const and m3 = 0
     // is z = 0 (w = -z): parallel, so O1 and O2 are at infinity however far
     // the window is shifted.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto shifted = frustum::off_axis<T>(T(0.5), T(3), T(-2), T(-0.25), T(1), T(10), depth);
         REQUIRE(shifted.ok());
         const auto k = frustum::key_points(*shifted);
@@ -121,7 +117,7 @@ TEST_CASE_TEMPLATE("off-axis: vanishing points stay at infinity; an oblique near
         CHECK(k.vanishing_y.w == 0);
         CHECK(point(k.vanishing_x) == close_abs(Vec4<T>(1, 0, 0, 0), tight<T>()));
         CHECK(point(k.vanishing_y) == close_abs(Vec4<T>(0, 1, 0, 0), tight<T>()));
-    }
+    });
     // After an oblique clip the near plane is c, and m2 = (z_f - z_n) k c +
     // z_n m3, so {m2 = 0, m3 = 0} = {c = 0, z = 0}: a finite line when c is
     // tilted. Tilt about the eye's y axis: c = (0.6, 0, -0.8, -1.6), i.e.
@@ -131,8 +127,7 @@ TEST_CASE_TEMPLATE("off-axis: vanishing points stay at infinity; an oblique near
     // while the line {c = 0, z = 0} runs along y and lies in Dx (x = 0 is
     // parallel to it): O1 stays at infinity, direction (0, +-1, 0).
     // O2 is on the near AND the far plane (both are combinations of m2, m3).
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto base = frustum::perspective<T>(T(pi / 2), T(1), T(1), T(10), depth);
         REQUIRE(base.ok());
         const auto clipped = frustum::clip_oblique(*base, Plane<T>(T(0.6), 0, T(-0.8), T(-1.6)));
@@ -151,15 +146,11 @@ TEST_CASE_TEMPLATE("off-axis: vanishing points stay at infinity; an oblique near
         const auto ky = frustum::key_points(*clipped_y);
         CHECK(point(ky.vanishing_y) == close_abs(Vec4<T>(0, T(8.0 / 3), 0, 1), 4 * loose<T>()));
         CHECK(ky.vanishing_x.w == 0);
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("centre D lies on the three division planes (eq. 4)", T, float, double) {
-    Random rng(21);
-    for (int i = 0; i < 500; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(21, 500, [&](Random&, const CameraSpec&, const MatrixPair<T>& pair) {
         const auto d = frustum::division_planes(pair);
         const Vec4<T> centre = frustum::key_points(pair).center;
         CHECK(std::abs(incidence(d.x, centre)) <= loose<T>());
@@ -173,18 +164,14 @@ TEST_CASE_TEMPLATE("centre D lies on the three division planes (eq. 4)", T, floa
             CHECK(d.z.evaluate(k.corners[j]) < 0);
             CHECK(d.z.evaluate(k.corners[j + 4]) > 0);
         }
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("key points of random cameras: clip = M * C, eye -> w = 0, vanishing points", T, float, double) {
     // Each key point is a column combination of M^-1; M times it is the
     // clip-space point of eq. 6/8 up to rounding: within loose() of it
     // relative to its size (no rescaling: lambda = 1 for corners and D).
-    Random rng(22);
-    for (int i = 0; i < 2000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(22, 2000, [&](Random&, const CameraSpec& c, const MatrixPair<T>& pair) {
         const auto k = frustum::key_points(pair);
         const Mat4<T>& m = pair.matrix();
         for (int j = 0; j < 8; ++j) {
@@ -211,7 +198,7 @@ TEST_CASE_TEMPLATE("key points of random cameras: clip = M * C, eye -> w = 0, va
             CHECK(k.eye.w > 0);
             CHECK(point(k.eye) == close_abs(Vec4<T>(Vec3<T>(c.eye), 1), loose<T>() * 40));
         }
-    }
+    });
 }
 
 // ---- the eye and its distances (eye_point, near_distance, far_distance,
@@ -219,8 +206,7 @@ TEST_CASE_TEMPLATE("key points of random cameras: clip = M * C, eye -> w = 0, va
 
 TEST_CASE_TEMPLATE("eye_point, near_distance, far_distance of the landmark, by hand", T, float, double) {
     const double tol = loose<T>() * 20;
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto camera = landmark_at_e<T>(T(10), depth);
         const auto eye = frustum::eye_point(camera);
         REQUIRE(eye.has_value());
@@ -240,7 +226,7 @@ TEST_CASE_TEMPLATE("eye_point, near_distance, far_distance of the landmark, by h
         CHECK(frame->forward() == close_abs(Vec3<T>(1, 0, 0), tol));
         CHECK(std::abs(double(frame->half_width_m) - 1) <= tol);
         CHECK(frame->eye == *eye); // one eye, from eye_point
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("far_distance refuses an infinite far plane; every query refuses an orthographic box", T, float,

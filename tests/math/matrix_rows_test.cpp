@@ -21,8 +21,7 @@ TEST_CASE_TEMPLATE("off_axis and orthographic: every entry of both matrices as p
     // The formulas of projection.hpp evaluated here in T, in the same
     // order, so the comparison is exact (==, not a tolerance).
     const T l = T(-0.7), r = T(1.3), b = T(-0.4), t = T(0.9), n = T(0.25), f = T(80);
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const T zn = frustum::clip_z_near<T>(depth), zf = frustum::clip_z_far<T>(depth);
         const auto p = frustum::off_axis<T>(l, r, b, t, n, f, depth);
         REQUIRE(p.ok());
@@ -41,7 +40,7 @@ TEST_CASE_TEMPLATE("off_axis and orthographic: every entry of both matrices as p
         CHECK(o->matrix() == from_rows<T>({ox, 0, 0, tx}, {0, oy, 0, ty}, {0, 0, oa, ob}, {0, 0, 0, 1}));
         CHECK(o->inverse() == from_rows<T>({1 / ox, 0, 0, -tx / ox}, {0, 1 / oy, 0, -ty / oy},
                                            {0, 0, 1 / oa, -ob / oa}, {0, 0, 0, 1}));
-    }
+    });
 }
 
 } // TEST_SUITE

@@ -222,8 +222,7 @@ TEST_CASE_TEMPLATE("mirror_rectangle: geometry behind the mirror leaks into the 
     // window [-0.55, 0.35]: inside the Paper frustum. The Exact frustum's
     // near plane is z = 0, so p is outside it.
     const Vec3<T> eye(3, 0, 2);
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto paper = frustum::mirror_rectangle(square_mirror<T>(), eye, T(20), MirrorFit::Paper, depth);
         const auto exact = frustum::mirror_rectangle(square_mirror<T>(), eye, T(20), MirrorFit::Exact, depth);
         REQUIRE((paper.ok() && exact.ok()));
@@ -240,7 +239,7 @@ TEST_CASE_TEMPLATE("mirror_rectangle: geometry behind the mirror leaks into the 
         const Vec4<T> q(T(-1.5), T(0.45), 1, 1);
         CHECK(clip_inside(Vec4<T>(paper->matrix() * q), depth));
         CHECK(clip_inside(Vec4<T>(exact->matrix() * q), depth));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("mirror_rectangle errors: degenerate rectangle, eye in the mirror's plane, far <= near", T, float,

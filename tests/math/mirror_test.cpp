@@ -31,8 +31,7 @@ TEST_CASE_TEMPLATE("mirror of the landmark in the plane z = -5: literal matrix",
     CHECK(inverse_residual(*m) <= 64 * eps<T>());
     // The same through other paths, in every depth range: reflect the
     // camera whose near plane is already at 5.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto b = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
         const auto near5 = frustum::off_axis<T>(-5, 5, -5, 5, 5, T(10), depth);
         REQUIRE((b.ok() && near5.ok()));
@@ -50,7 +49,7 @@ TEST_CASE_TEMPLATE("mirror of the landmark in the plane z = -5: literal matrix",
         // the eye and the mirror) nothing is shown; in front of it, yes.
         CHECK_FALSE(clip_inside(Vec4<T>(mirrored->matrix() * Vec4<T>(0, 0, -6, 1)), depth));
         CHECK(clip_inside(Vec4<T>(mirrored->matrix() * Vec4<T>(0, 0, -4, 1)), depth));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("mirror of a camera looking slightly up over water keeps w > 0 inside", T, float, double) {
@@ -63,8 +62,7 @@ TEST_CASE_TEMPLATE("mirror of a camera looking slightly up over water keeps w > 
     // 3 of the mirror pair are those of the reflected pair, M R). The
     // reflected camera looks 2.9 degrees DOWN from (0, -2, 0): its view
     // axis meets y = 0 only behind the eye.
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto projection = frustum::perspective<T>(T(pi / 3), 1, T(0.1), T(100), depth);
         const auto view = frustum::look_at<T>({0, 2, 0}, {0, T(2.5), -10}, {0, 1, 0});
         REQUIRE((projection.ok() && view.ok()));
@@ -76,7 +74,7 @@ TEST_CASE_TEMPLATE("mirror of a camera looking slightly up over water keeps w > 
         const Vec4<T> shown = m->matrix() * Vec4<T>(0, 1, -10, 1);
         CHECK(shown.w == doctest::Approx(seen.w).epsilon(1e-5));
         CHECK(clip_inside(shown, depth));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("mirror semantics on random cameras and mirrors", T, float, double) {
@@ -91,13 +89,9 @@ TEST_CASE_TEMPLATE("mirror semantics on random cameras and mirrors", T, float, d
     // oblique_clip_test: a negated pair has w < 0 inside).
     const double delta = sizeof(T) == sizeof(float) ? 1e-2 : 1e-6;
     const double tol = sizeof(T) == sizeof(float) ? 1e-4 : 1e-10;
-    Random rng(71);
     int negated = 0, seen_in_mirror = 0, in_front = 0;
-    for (int i = 0; i < 1000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
+    for_each_random_camera<T>(71, 1000, [&](Random& rng, const CameraSpec& c, const MatrixPair<T>& pair) {
         const Plane<T> plane = random_plane_through(rng, pair, false);
-        INFO(c.text());
         INFO("mirror ", vec_text(plane.abcd));
         const auto m = frustum::mirror(pair, plane);
         REQUIRE_MESSAGE(m.ok(), m.error());
@@ -134,15 +128,14 @@ TEST_CASE_TEMPLATE("mirror semantics on random cameras and mirrors", T, float, d
         const Plane<T> near = frustum::planes(*m).near;
         const Plane<T> expected = sign > 0 ? plane.normalized() : plane.normalized().flipped();
         CHECK(near == close_abs(expected, loose<T>() * (1 + std::abs(double(plane.offset())))));
-    }
+    });
     CHECK(seen_in_mirror > 5000);
     CHECK(in_front > 5000);
     CHECK_MESSAGE(negated == 0, negated, " of 1000 mirror pairs came back negated (w < 0 inside)");
 }
 
 TEST_CASE_TEMPLATE("mirror of an infinite-far camera works", T, float, double) {
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto base = frustum::perspective<T>(T(pi / 2), 1, 1, infinite_far, depth);
         REQUIRE(base.ok());
         // Tilted mirror z = -5 + 0.2 x, facing the eye.
@@ -154,7 +147,7 @@ TEST_CASE_TEMPLATE("mirror of an infinite-far camera works", T, float, double) {
         const glm::dmat4 reflection = frustum::reflection_matrix(Plane<double>(glm::dvec4(plane.abcd)));
         const glm::dvec4 shown = glm::dmat4(m->matrix()) * (reflection * glm::dvec4(0, 0, -50, 1));
         CHECK(clip_inside(shown, depth));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("mirror errors", T, float, double) {

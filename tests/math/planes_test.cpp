@@ -35,8 +35,7 @@ TEST_CASE_TEMPLATE("planes of the 90-degree landmark, by hand", T, float, double
     //   T = (0, -1, -1, 0)/sqrt2, N = (0, 0, -1, -1): -z >= 1,
     //   F = (0, 0, 1, 10): -z <= 10, in EVERY depth range.
     const T h = T(1 / std::sqrt(2.0));
-    for (const DepthRange depth : all_depth_ranges) {
-        INFO("depth=", frustum::to_string(depth));
+    for_each_depth_range([&](DepthRange depth) {
         const auto pair = frustum::perspective<T>(T(pi / 2), 1, 1, T(10), depth);
         REQUIRE(pair.ok());
         const auto p = frustum::planes(*pair);
@@ -54,15 +53,11 @@ TEST_CASE_TEMPLATE("planes of the 90-degree landmark, by hand", T, float, double
         CHECK_FALSE(pi_.far.has_value());
         CHECK(pi_.near == close_abs(Plane<T>(0, 0, -1, -1), tight<T>()));
         CHECK(pi_.left == close_abs(Plane<T>(h, 0, -h, 0), tight<T>()));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("each plane contains its four corners; normalized; far absent iff infinite", T, float, double) {
-    Random rng(31);
-    for (int i = 0; i < 2000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(31, 2000, [&](Random&, const CameraSpec& c, const MatrixPair<T>& pair) {
         const auto p = frustum::planes(pair);
         const auto k = frustum::key_points(pair);
         CHECK(p.far.has_value() == !c.infinite);
@@ -84,15 +79,11 @@ TEST_CASE_TEMPLATE("each plane contains its four corners; normalized; far absent
                 if (h.w > 0) CHECK(plane.distance(Vec3<T>(h) / h.w) > 0);
             }
         }
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("the centre D is at positive distance from all six planes (inward convention)", T, float, double) {
-    Random rng(32);
-    for (int i = 0; i < 2000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(32, 2000, [&](Random&, const CameraSpec&, const MatrixPair<T>& pair) {
         const Vec4<T> d = frustum::key_points(pair).center;
         REQUIRE(d.w > 0);
         const Vec3<T> centre = Vec3<T>(d) / d.w;
@@ -101,7 +92,7 @@ TEST_CASE_TEMPLATE("the centre D is at positive distance from all six planes (in
             CAPTURE(plane_names[j]);
             if (all[std::size_t(j)]) CHECK(all[std::size_t(j)]->distance(centre) > 0);
         }
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("points just inside / outside each plane are classified like clip space says", T, float, double) {
@@ -186,10 +177,7 @@ TEST_CASE("planes() of an imported matrix whose left plane is the plane at infin
 }
 
 TEST_CASE_TEMPLATE("raw planes are positive multiples of the normalized ones", T, float, double) {
-    Random rng(34);
-    for (int i = 0; i < 300; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
+    for_each_random_camera<T>(34, 300, [&](Random&, const CameraSpec&, const MatrixPair<T>& pair) {
         const auto raw = frustum::raw_planes(pair).as_array();
         const auto unit = frustum::planes(pair).as_array();
         for (std::size_t j = 0; j < 6; ++j) {
@@ -199,7 +187,7 @@ TEST_CASE_TEMPLATE("raw planes are positive multiples of the normalized ones", T
             CHECK(f.lambda > 0);
             CHECK(f.residual <= tight<T>());
         }
-    }
+    });
 }
 
 } // TEST_SUITE

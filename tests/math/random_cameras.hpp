@@ -144,4 +144,19 @@ MatrixPair<T> make(const CameraSpec& c) {
     return *pair;
 }
 
+// Draws `count` random cameras from a generator seeded with `seed`, builds
+// each in T (make<T>: a camera that fails to build fails the test) and runs
+// check(rng, spec, pair) with the camera's text INFO'd; the generator is
+// passed on for the draws a case makes after the camera's.
+template <class T, class Check>
+void for_each_random_camera(std::uint64_t seed, int count, Check check, const CameraOptions& options = {}) {
+    Random rng(seed);
+    for (int i = 0; i < count; ++i) {
+        const CameraSpec c = random_camera(rng, options);
+        const MatrixPair<T> pair = make<T>(c);
+        INFO(c.text());
+        check(rng, c, pair);
+    }
+}
+
 } // namespace mtest

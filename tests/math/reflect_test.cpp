@@ -32,11 +32,7 @@ TEST_CASE_TEMPLATE("reflection_matrix: literal for the plane y = 2, involution, 
 
 TEST_CASE_TEMPLATE("reflect: M' = M R (the paper's R P transposed), twice is the identity, winding toggles", T, float,
                    double) {
-    Random rng(82);
-    for (int i = 0; i < 1000; ++i) {
-        const CameraSpec c = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(c);
-        INFO(c.text());
+    for_each_random_camera<T>(82, 1000, [&](Random& rng, const CameraSpec& c, const MatrixPair<T>& pair) {
         // Any plane, either side facing the eye; unnormalized on purpose.
         const double scale = rng.uniform(0.1, 10);
         const double offset = rng.uniform(-30, 30) * scale; // drawn before the normal, as always
@@ -68,7 +64,7 @@ TEST_CASE_TEMPLATE("reflect: M' = M R (the paper's R P transposed), twice is the
         const glm::dmat4 rd(r);
         const glm::dvec4 left_reflected = glm::transpose(rd) * glm::dvec4(p0.left.abcd); // c R^-1 = c R
         CHECK(glm::dvec4(p1.left.abcd) == close_abs(left_reflected, loose<T>() * (1 + max_abs(left_reflected))));
-    }
+    });
 }
 
 TEST_CASE_TEMPLATE("reflect: the landmark in the plane z = -5 looks back at the origin", T, float, double) {

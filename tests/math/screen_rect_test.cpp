@@ -87,11 +87,8 @@ TEST_CASE_TEMPLATE("screen_rect: nothing visible gives an empty result (behind, 
 
 TEST_CASE_TEMPLATE("screen_rect: random quads, every visible sample inside, bounds equal a world-space clip", T, float,
                    double) {
-    Random rng(7201);
     int non_empty = 0;
-    for (int i = 0; i < 200; ++i) {
-        const CameraSpec spec = random_camera(rng);
-        const MatrixPair<T> pair = make<T>(spec);
+    for_each_random_camera<T>(7201, 200, [&](Random& rng, const CameraSpec& spec, const MatrixPair<T>& pair) {
         INFO("camera: ", spec.text());
         // A quad around a point inside the frustum, up to 3x its distance wide.
         const glm::dvec4 h = glm::dmat4(pair.inverse()) * random_clip_point(rng, spec.depth, 0.1);
@@ -117,7 +114,7 @@ TEST_CASE_TEMPLATE("screen_rect: random quads, every visible sample inside, boun
         }
         if (!r->has_value()) {
             CHECK(x0 > x1); // no sample visible either
-            continue;
+            return;
         }
         ++non_empty;
         const CropRect<T>& rect = **r;
@@ -157,7 +154,7 @@ TEST_CASE_TEMPLATE("screen_rect: random quads, every visible sample inside, boun
         CHECK(std::abs(double(rect.y + rect.height) - ry1) <= tolerance);
         // Always a valid crop of the image.
         CHECK(frustum::crop(pair, rect).ok());
-    }
+    });
     CHECK(non_empty >= 150);
 }
 

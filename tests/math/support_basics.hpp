@@ -49,5 +49,13 @@ constexpr T eps() {
     return std::numeric_limits<T>::epsilon();
 }
 
+// Runs check(depth) once per depth range, the range's name INFO'd.
+template <class Check>
+void for_each_depth_range(Check check) {
+    for (const DepthRange depth : all_depth_ranges) {
+        INFO("depth=", frustum::to_string(depth));
+        check(depth);
+    }
+}
 
 } // namespace mtest

@@ -70,12 +70,9 @@ TEST_CASE("frustum-vectors: bad arguments and requests") {
         support::Launch launch;
         launch.args = c.args;
         launch.stdin_text = c.stdin_text;
-        const support::Outcome r = support::run(FRUSTUM_VECTORS_EXE, launch);
+        const support::Outcome r = rob::run_checked(FRUSTUM_VECTORS_EXE, launch, c.exit_status, c.exit_status != 0);
         CAPTURE(r.err);
-        CHECK(r.signal == 0);
-        CHECK(r.exit_status == c.exit_status);
         if (c.exit_status != 0) {
-            CHECK_MESSAGE(r.out.empty(), "stdout must be empty, got: ", r.out.substr(0, 200));
             CHECK(r.err.rfind("frustum-vectors: ", 0) == 0);
             CHECK(r.err.find('\n') == r.err.size() - 1); // one line
         } else {

@@ -72,4 +72,14 @@ bool no_gl() {
     return !why_not.empty();
 }
 
+support::Outcome run_checked(const std::string& program, const support::Launch& launch, int exit_status,
+                             bool no_stdout) {
+    support::Outcome r = support::run(program, launch);
+    CAPTURE(r.err);
+    CHECK(r.signal == 0);
+    CHECK(r.exit_status == exit_status);
+    if (no_stdout) CHECK_MESSAGE(r.out.empty(), "stdout must be empty, got: ", r.out.substr(0, 200));
+    return r;
+}
+
 } // namespace rob

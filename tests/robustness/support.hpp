@@ -28,6 +28,12 @@ struct Isolated {
 };
 Isolated isolated(const std::function<std::string()>& work, unsigned timeout_s = 60);
 
+// Runs `program` (support::run) and CHECKs, its stderr captured, that no
+// signal ended it, that it exited with `exit_status` and, when `no_stdout`,
+// that it wrote nothing on stdout: the first checks of every CLI case row.
+support::Outcome run_checked(const std::string& program, const support::Launch& launch, int exit_status,
+                             bool no_stdout);
+
 // True (after recording a skip) when this machine has no offscreen GL
 // context, asked in-process the way frustum-demo asks (EGL, else OSMesa)
 // before a run, so that the run's own errors are never mistaken for it.

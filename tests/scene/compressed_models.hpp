@@ -124,4 +124,16 @@ inline std::optional<std::filesystem::path> make_or_skip(const Variant& variant,
     return path;
 }
 
+// Makes every variant in `dir` (make_or_skip: a missing tool skips it) and
+// runs check(variant, path) on each one made, its file name captured.
+template <class Check>
+void for_each_made_variant(const std::filesystem::path& dir, Check check) {
+    for (const Variant& variant : variants()) {
+        const std::string file = variant.file;
+        CAPTURE(file);
+        const auto path = make_or_skip(variant, dir, file);
+        if (path) check(variant, *path);
+    }
+}
+
 } // namespace compressed_models

@@ -38,11 +38,7 @@ image::Rgba texel(const scene::Scene& s, int x, int y) {
 TEST_SUITE("scene") {
 
 TEST_CASE("every generated model loads with the expected mesh, instance, camera and image counts") {
-    struct Expected {
-        const char* file;
-        std::size_t meshes, instances, cameras, images;
-    };
-    const Expected models[] = {
+    const scene_test::ExpectedModel models[] = {
         {"box.gltf", 1, 1, 0, 0},           {"box_textured.gltf", 1, 1, 0, 1},
         {"box_vertex_colors.gltf", 1, 1, 0, 0}, {"cameras.gltf", 1, 1, 2, 0},
         {"index_types.gltf", 3, 3, 0, 0},   {"interleaved.gltf", 1, 1, 0, 1},
@@ -56,15 +52,14 @@ TEST_CASE("every generated model loads with the expected mesh, instance, camera 
     };
     // The table names every file of the folder, and nothing else.
     std::set<std::string> listed, found;
-    for (const Expected& e : models) listed.insert(e.file);
+    for (const scene_test::ExpectedModel& e : models) listed.insert(e.name);
     for (const auto& file : test_samples::gltf_files_under(test_samples::models_folder())) {
         found.insert(file.filename().string());
     }
     CHECK(listed == found);
-    for (const Expected& expected : models) {
-        CAPTURE(expected.file);
-        const scene::Scene s = load_ok(model_path(expected.file));
-        scene_test::check_loaded_shape(s, {expected.meshes, expected.instances, expected.cameras, expected.images});
+    for (const scene_test::ExpectedModel& expected : models) {
+        CAPTURE(expected.name);
+        const scene::Scene s = scene_test::load_with_shape(model_path(expected.name), expected.counts);
         CHECK(s.world_bounds.min.x < s.world_bounds.max.x);
     }
 }
@@ -232,9 +227,7 @@ TEST_CASE("textures: the orientation PNG decodes with red at uv (0, 0), the imag
     for (const char* file : {"box_textured.gltf", "interleaved.gltf", "torus.gltf", "torus.glb"}) {
         CAPTURE(file);
         const scene::Scene s = load_ok(model_path(file));
-        REQUIRE(s.images.size() == 1);
-        CHECK(s.images[0].width == 4);
-        CHECK(s.images[0].height == 4);
+        scene_test::check_one_image(s, 4, 4);
         CHECK(texel(s, 0, 0) == image::Rgba{255, 0, 0, 255});     // top left: red
         CHECK(texel(s, 3, 0) == image::Rgba{0, 255, 0, 255});     // top right: green
         CHECK(texel(s, 0, 3) == image::Rgba{0, 0, 255, 255});     // bottom left: blue

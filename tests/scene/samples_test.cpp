@@ -40,14 +40,7 @@ TEST_SUITE("corpus-samples") {
 TEST_CASE("every sample loads with the expected mesh and instance counts") {
     const auto folder = test_samples::corpus_folder("gltf-samples");
     if (!folder) return;
-    struct Expected {
-        const char* model;
-        std::size_t meshes;
-        std::size_t instances;
-        std::size_t cameras;
-        std::size_t images;
-    };
-    const Expected samples[] = {
+    const scene_test::ExpectedModel samples[] = {
         {"AnimatedTriangle", 1, 1, 0, 0}, {"Box", 1, 1, 0, 0},
         {"BoxAnimated", 2, 2, 0, 0},      {"BoxTextured", 1, 1, 0, 1},
         {"BoxVertexColors", 1, 1, 0, 0},  {"Cameras", 1, 1, 2, 0},
@@ -58,10 +51,9 @@ TEST_CASE("every sample loads with the expected mesh and instance counts") {
         {"SimpleSparseAccessor", 1, 1, 0, 0}, {"TextureCoordinateTest", 5, 5, 0, 1},
         {"Triangle", 1, 1, 0, 0},         {"TriangleWithoutIndices", 1, 1, 0, 0},
     };
-    for (const Expected& expected : samples) {
-        CAPTURE(expected.model);
-        const scene::Scene s = load_ok(sample(*folder, expected.model));
-        scene_test::check_loaded_shape(s, {expected.meshes, expected.instances, expected.cameras, expected.images});
+    for (const scene_test::ExpectedModel& expected : samples) {
+        CAPTURE(expected.name);
+        const scene::Scene s = scene_test::load_with_shape(sample(*folder, expected.name), expected.counts);
         CHECK(s.world_bounds.min.x <= s.world_bounds.max.x);
     }
 }
@@ -70,10 +62,7 @@ TEST_CASE("Duck: camera, decoded texture, node scale in the bounds") {
     const auto samples = test_samples::corpus_folder("gltf-samples");
     if (!samples) return;
     const scene::Scene s = load_ok(sample(*samples, "Duck"));
-    REQUIRE(s.images.size() == 1);
-    CHECK(s.images[0].width == 512);
-    CHECK(s.images[0].height == 512);
-    CHECK(s.images[0].rgba.size() == 512u * 512u * 4u);
+    scene_test::check_one_image(s, 512, 512);
     REQUIRE(s.materials.size() == 1);
     CHECK(s.materials[0].name == "blinn3-fx");
     CHECK(s.materials[0].base_color_texture == 0);
@@ -236,10 +225,7 @@ TEST_CASE("textured samples decode their images to RGBA8") {
     const auto samples = test_samples::corpus_folder("gltf-samples");
     if (!samples) return;
     const scene::Scene box = load_ok(sample(*samples, "BoxTextured"));
-    REQUIRE(box.images.size() == 1);
-    CHECK(box.images[0].width == 256);
-    CHECK(box.images[0].height == 256);
-    CHECK(box.images[0].rgba.size() == 256u * 256u * 4u);
+    scene_test::check_one_image(box, 256, 256);
     CHECK(box.materials[0].base_color_texture == 0);
 
     const scene::Scene uv = load_ok(sample(*samples, "TextureCoordinateTest"));

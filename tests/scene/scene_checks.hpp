@@ -65,6 +65,28 @@ inline void check_loaded_shape(const scene::Scene& s, const Counts& expected) {
     }
 }
 
+// A model of a count table: its file (or sample) name and what it loads as.
+struct ExpectedModel {
+    const char* name;
+    Counts counts;
+};
+
+// Loads `path` (load_ok) and checks it against `expected` (check_loaded_shape).
+inline scene::Scene load_with_shape(const std::string& path, const Counts& expected) {
+    scene::Scene s = load_ok(path);
+    check_loaded_shape(s, expected);
+    return s;
+}
+
+// REQUIREs that the scene holds one image, and CHECKs that it is
+// width x height pixels decoded to RGBA8 (4 bytes a pixel).
+inline void check_one_image(const scene::Scene& s, int width, int height) {
+    REQUIRE(s.images.size() == 1);
+    CHECK(s.images[0].width == width);
+    CHECK(s.images[0].height == height);
+    CHECK(s.images[0].rgba.size() == std::size_t(width) * std::size_t(height) * 4u);
+}
+
 inline const scene::Instance& instance_named(const scene::Scene& s, const std::string& name) {
     for (const scene::Instance& instance : s.instances) {
         if (instance.node_name == name) return instance;
