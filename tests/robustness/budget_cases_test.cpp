@@ -89,17 +89,24 @@ void check_refused(const Run& run, int status, const std::vector<std::string>& p
     CHECK(run.outcome.err.find('\n') == run.outcome.err.size() - 1); // one line
 }
 
+// A plain render at `size` of zero_filled(count, primitives, nodes), refused
+// with exit status 1 (check_refused) and `phrases`.
+void check_zero_filled_refused(long count, int primitives, int nodes, const std::string& size,
+                               const std::vector<std::string>& phrases) {
+    support::TempDir dir;
+    check_refused(demo(dir, zero_filled(count, primitives, nodes), {"--effect", "plain", "--size", size}), 1, phrases);
+}
+
 #endif
 
 } // namespace
 
 #ifdef FRUSTUM_DEMO_EXE
 TEST_CASE("budget: zero-filled accessors over the memory budget are refused before decoding") {
-    support::TempDir dir;
     // 318 bytes on main -> 5.5 GB peak RSS: 4 x 16 Mi vertices.
-    const Run run = demo(dir, zero_filled(16777216, 4, 1), {"--effect", "plain", "--size", "64x64"});
-    check_refused(run, 1, {"the scene decodes to 1 GiB", "over the budget of 256 MiB",
-                           "raise it with --max-memory-mb"});
+    check_zero_filled_refused(16777216, 4, 1, "64x64",
+                              {"the scene decodes to 1 GiB", "over the budget of 256 MiB",
+                               "raise it with --max-memory-mb"});
 }
 
 TEST_CASE("budget: zero-filled accessors that fit are rendered") {
@@ -111,10 +118,9 @@ TEST_CASE("budget: zero-filled accessors that fit are rendered") {
 }
 
 TEST_CASE("budget: one accessor drawn by many nodes is bounded by --max-drawn-vertices") {
-    support::TempDir dir;
-    const Run run = demo(dir, zero_filled(1000000, 1, 40), {"--effect", "plain", "--size", "64x64"});
-    check_refused(run, 1, {"the vertex count drawn per frame", "over the limit of 33554432",
-                           "raise it with --max-drawn-vertices"});
+    check_zero_filled_refused(1000000, 1, 40, "64x64",
+                              {"the vertex count drawn per frame", "over the limit of 33554432",
+                               "raise it with --max-drawn-vertices"});
 }
 
 TEST_CASE("budget: node count, chains and cycles cost O(nodes) and a short message") {

@@ -67,10 +67,8 @@ TEST_SUITE("robustness") {
 
 TEST_CASE("frustum-vectors: bad arguments and requests") {
     support::for_each_case(vectors_cases(), 12, [](const VectorsCase& c) {
-        support::Launch launch;
-        launch.args = c.args;
-        launch.stdin_text = c.stdin_text;
-        const support::Outcome r = rob::run_checked(FRUSTUM_VECTORS_EXE, launch, c.exit_status, c.exit_status != 0);
+        const support::Outcome r =
+            rob::run_checked(FRUSTUM_VECTORS_EXE, c.args, c.exit_status, c.exit_status != 0, c.stdin_text);
         CAPTURE(r.err);
         if (c.exit_status != 0) {
             CHECK(r.err.rfind("frustum-vectors: ", 0) == 0);

@@ -82,4 +82,12 @@ support::Outcome run_checked(const std::string& program, const support::Launch& 
     return r;
 }
 
+support::Outcome run_checked(const std::string& program, const std::vector<std::string>& args, int exit_status,
+                             bool no_stdout, const std::string& stdin_text) {
+    support::Launch launch;
+    launch.args = args;
+    launch.stdin_text = stdin_text;
+    return run_checked(program, launch, exit_status, no_stdout);
+}
+
 } // namespace rob

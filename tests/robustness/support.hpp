@@ -33,6 +33,9 @@ Isolated isolated(const std::function<std::string()>& work, unsigned timeout_s =
 // that it wrote nothing on stdout: the first checks of every CLI case row.
 support::Outcome run_checked(const std::string& program, const support::Launch& launch, int exit_status,
                              bool no_stdout);
+// The same for a launch of `args` and `stdin_text`, the rest by default.
+support::Outcome run_checked(const std::string& program, const std::vector<std::string>& args, int exit_status,
+                             bool no_stdout, const std::string& stdin_text = "");
 
 // True (after recording a skip) when this machine has no offscreen GL
 // context, asked in-process the way frustum-demo asks (EGL, else OSMesa)

@@ -10,8 +10,14 @@
 
 namespace support {
 
-// CHECKs that every phrase occurs in text, naming the first missing one.
+// CHECKs that every phrase occurs in text, naming the first missing one and
+// the text.
 void check_phrases(const std::string& text, const std::vector<std::string>& phrases);
+
+// CHECKs, the message captured, that an error message starts with `prefix`,
+// is one line when `one_line`, and holds every phrase (check_phrases).
+void check_message(const std::string& message, const std::string& prefix, const std::vector<std::string>& phrases,
+                   bool one_line);
 
 // CHECKs that `cases` holds at least `min_cases` rows (a table cut short by
 // mistake fails), then runs `check` on each with its `input` (the row's
