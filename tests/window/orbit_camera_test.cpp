@@ -4,6 +4,9 @@
 #include "../plan/showcase.hpp"
 
 #include <doctest/doctest.h>
+// Approx epsilon of these float results: 2 float ulps relative (2 x 1.19e-7), doctest's
+// default (1.19e-5) being 100; each passes at 2 ulps (measured: tightened until one failed).
+static constexpr double kFloatTwoUlps = 2.4e-7;
 
 #include <window/orbit_camera.hpp>
 
@@ -48,7 +51,7 @@ TEST_CASE("the first orbit pair reproduces the scene camera (no roll, same lens)
     const window::OrbitProjection projection = window::orbit_projection(scene, *render::find_camera(render_test::showcase(), std::nullopt));
     CHECK(projection.yfov_rad == doctest::Approx(50.0 * 3.14159265358979 / 180.0).epsilon(1e-5));
     REQUIRE(projection.near_m);
-    CHECK(*projection.near_m == doctest::Approx(0.1f));
+    CHECK(*projection.near_m == doctest::Approx(0.1f).epsilon(kFloatTwoUlps));
     const auto pair = window::orbit_pair(orbit, projection, 256.0f / 144.0f, scene.world_bounds);
     REQUIRE_MESSAGE(pair.ok(), pair.error());
     // Entries reach ~1e1; float round-off of two constructions.
@@ -61,31 +64,31 @@ TEST_CASE("orbit, pan and zoom move the eye as documented") {
     camera.target = glm::vec3(1.0f, 2.0f, 3.0f);
     camera.distance_m = 4.0f;
     const glm::vec3 start = camera.eye();
-    CHECK(start.z == doctest::Approx(7.0f)); // yaw 0, pitch 0: on the +Z side
+    CHECK(start.z == doctest::Approx(7.0f).epsilon(kFloatTwoUlps)); // yaw 0, pitch 0: on the +Z side
 
     window::orbit(camera, 1.5707963f, 0.0f); // a quarter turn about +Y
-    CHECK(camera.eye().x == doctest::Approx(5.0f));
-    CHECK(glm::length(camera.eye() - camera.target) == doctest::Approx(4.0f));
+    CHECK(camera.eye().x == doctest::Approx(5.0f).epsilon(kFloatTwoUlps));
+    CHECK(glm::length(camera.eye() - camera.target) == doctest::Approx(4.0f).epsilon(kFloatTwoUlps));
 
     window::orbit(camera, 0.0f, 10.0f); // pitch is clamped short of the pole
-    CHECK(camera.pitch_rad == doctest::Approx(window::kMaxPitchRad));
+    CHECK(camera.pitch_rad == doctest::Approx(window::kMaxPitchRad).epsilon(kFloatTwoUlps));
     window::orbit(camera, 0.0f, -20.0f);
-    CHECK(camera.pitch_rad == doctest::Approx(-window::kMaxPitchRad));
+    CHECK(camera.pitch_rad == doctest::Approx(-window::kMaxPitchRad).epsilon(kFloatTwoUlps));
     const auto steep = window::orbit_pair(camera, {}, 1.0f, scene::Bounds{});
     CHECK_MESSAGE(steep.ok(), steep.error());
 
     camera.pitch_rad = 0.0f;
     const glm::vec3 before = camera.eye();
     window::pan(camera, 0.5f, 0.25f);
-    CHECK(glm::length(camera.eye() - before) == doctest::Approx(std::sqrt(0.5f * 0.5f + 0.25f * 0.25f)));
-    CHECK(camera.eye().y - before.y == doctest::Approx(0.25f));
+    CHECK(glm::length(camera.eye() - before) == doctest::Approx(std::sqrt(0.5f * 0.5f + 0.25f * 0.25f)).epsilon(kFloatTwoUlps));
+    CHECK(camera.eye().y - before.y == doctest::Approx(0.25f).epsilon(kFloatTwoUlps));
 
     window::zoom(camera, 0.5f, 1.0f, 10.0f);
-    CHECK(camera.distance_m == doctest::Approx(2.0f));
+    CHECK(camera.distance_m == doctest::Approx(2.0f).epsilon(kFloatTwoUlps));
     window::zoom(camera, 0.01f, 1.0f, 10.0f);
-    CHECK(camera.distance_m == doctest::Approx(1.0f));
+    CHECK(camera.distance_m == doctest::Approx(1.0f).epsilon(kFloatTwoUlps));
     window::zoom(camera, 100.0f, 1.0f, 10.0f);
-    CHECK(camera.distance_m == doctest::Approx(10.0f));
+    CHECK(camera.distance_m == doctest::Approx(10.0f).epsilon(kFloatTwoUlps));
 }
 
 TEST_CASE("without a perspective scene camera the orbit fits its depth range to the scene") {

@@ -1,5 +1,8 @@
 // stb_easy_font text as triangles: placement, columns, flipping y.
 #include <doctest/doctest.h>
+// Approx epsilon of these float results: 2 float ulps relative (2 x 1.19e-7), doctest's
+// default (1.19e-5) being 100; each passes at 2 ulps (measured: tightened until one failed).
+static constexpr double kFloatTwoUlps = 2.4e-7;
 
 #include <window/text_layout.hpp>
 
@@ -28,7 +31,7 @@ TEST_CASE("glyphs become whole triangles inside the reported block, y counted fr
     const window::TextLayout layout = window::layout_text({"Hello", "W"}, glm::vec2(10.0f, 20.0f), 2.0f, 200);
     REQUIRE_FALSE(layout.triangles.empty());
     CHECK(layout.triangles.size() % 6 == 0); // two triangles per stb quad
-    CHECK(layout.size_px.y == doctest::Approx(2.0f * 2.0f * window::kLineHeightDots));
+    CHECK(layout.size_px.y == doctest::Approx(2.0f * 2.0f * window::kLineHeightDots).epsilon(kFloatTwoUlps));
     const Box box = box_of(layout.triangles);
     CHECK(box.min.x >= 10.0f);
     CHECK(box.max.x <= 10.0f + layout.size_px.x);
@@ -44,7 +47,7 @@ TEST_CASE("a tab starts a second column aligned over all lines") {
     const window::TextLayout first_x = window::layout_text({"a\tx"}, glm::vec2(0.0f), 1.0f, 100);
     const window::TextLayout second_x = window::layout_text({"abcdefgh\tx"}, glm::vec2(0.0f), 1.0f, 100);
     // Both x's start after the widest first column.
-    CHECK(one.size_px.x == doctest::Approx(second_x.size_px.x));
+    CHECK(one.size_px.x == doctest::Approx(second_x.size_px.x).epsilon(kFloatTwoUlps));
     CHECK(first_x.size_px.x < second_x.size_px.x);
     CHECK(window::layout_text({}, glm::vec2(0.0f), 1.0f, 100).triangles.empty());
     CHECK(window::layout_text({"", " "}, glm::vec2(0.0f), 1.0f, 100).triangles.empty());
