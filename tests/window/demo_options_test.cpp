@@ -9,6 +9,7 @@
 
 #include <demo/options.hpp>
 
+#include <array>
 #include <map>
 #include <set>
 #include <string>
@@ -40,6 +41,15 @@ std::vector<demo::Command> commands_of(const demo::Option& row) {
         }
     }
     return out;
+}
+
+// parse_options()'s Settings; a failed REQUIRE when it answered anything else.
+demo::Settings settings_of(demo::Command command, const std::vector<std::string>& options) {
+    std::vector<std::string> args{demo::command_name(command)};
+    args.insert(args.end(), options.begin(), options.end());
+    auto parsed = demo::parse_options(command, args);
+    REQUIRE(std::holds_alternative<demo::Settings>(parsed));
+    return std::get<demo::Settings>(parsed);
 }
 
 const std::vector<std::string> kBadValues = {"", "0", "-1", "x!", "1e30", "3,", "0x0"};
@@ -140,6 +150,205 @@ TEST_CASE("demo options: --verbose and the budget options mean the same in every
     }
 }
 
+// Each option's value lands in its field, with the value written here by
+// hand from the option's text (not from the parser), and a neighbouring
+// default left as it was.
+TEST_CASE("demo options: each option writes the value it was given") {
+    const demo::Settings render_defaults = demo::defaults(demo::kRender);
+    {
+        const demo::Settings s = settings_of(demo::kRender, {"--scene", "city.gltf", "--camera", "2"});
+        CHECK(s.scene_path == "city.gltf");
+        REQUIRE(s.camera.has_value());
+        CHECK(*s.camera == "2");
+        CHECK(s.width_px == 640); // untouched: render's default 640x360
+        CHECK(s.height_px == 360);
+    }
+    {
+        const demo::Settings s = settings_of(demo::kRender, {"--size", "64x48"});
+        CHECK(s.width_px == 64);
+        CHECK(s.height_px == 48);
+        CHECK(!s.poster_tile_px.has_value());
+        CHECK(s.out_dir == "out");
+    }
+    {
+        const demo::Settings s = settings_of(demo::kRender, {"--size", "4096x2048", "--poster-tile", "32x16"});
+        CHECK(s.width_px == 4096);
+        CHECK(s.height_px == 2048);
+        REQUIRE(s.poster_tile_px.has_value());
+        CHECK(s.poster_tile_px->first == 32);
+        CHECK(s.poster_tile_px->second == 16);
+    }
+    {
+        const demo::Settings s = settings_of(demo::kRender, {"--depth", "minus_one_to_one", "--msaa", "2", "--out", "shots"});
+        CHECK(s.depth == render::DepthPath::MinusOneToOne);
+        CHECK(s.msaa_samples == 2);
+        CHECK(s.out_dir == "shots");
+        CHECK(s.width_px == render_defaults.width_px);
+        CHECK(render_defaults.depth == render::DepthPath::ClipControlWhenAvailable);
+        CHECK(render_defaults.msaa_samples == gl::kAutomaticSamples);
+    }
+    {
+        const demo::Settings d = demo::defaults(demo::kWindow);
+        CHECK(d.width_px == 960); // the window's default 960x540
+        CHECK(d.height_px == 540);
+        CHECK(d.context_api == gl::Api::Gles);
+        CHECK(!d.inset);
+        CHECK(!d.panel);
+        CHECK(!d.help_overlay);
+        CHECK(!d.frames.has_value());
+        CHECK(!d.screenshot.has_value());
+        CHECK(d.keys.empty());
+        const demo::Settings s = settings_of(demo::kWindow, {"--context", "gl", "--inset", "--frames", "3",
+                                                              "--screenshot", "shot.png", "--size", "64x48"});
+        CHECK(s.context_api == gl::Api::GlCore);
+        CHECK(s.inset);
+        CHECK(!s.panel); // untouched
+        CHECK(!s.help_overlay);
+        REQUIRE(s.frames.has_value());
+        CHECK(*s.frames == 3);
+        REQUIRE(s.screenshot.has_value());
+        CHECK(*s.screenshot == "shot.png");
+        CHECK(s.width_px == 64);
+        CHECK(s.height_px == 48);
+        const demo::Settings p = settings_of(demo::kWindow, {"--panel", "--help-overlay", "--context", "es"});
+        CHECK(p.panel);
+        CHECK(p.help_overlay);
+        CHECK(!p.inset);
+        CHECK(p.context_api == gl::Api::Gles);
+        CHECK(settings_of(demo::kWindow, {"--keys", "1,Shift+Left,h"}).keys.size() == 3u);
+    }
+    {
+        const demo::Settings s = settings_of(demo::kCurvedReport, {"--patches", "1,4"});
+        CHECK(s.patch_counts == std::vector<int>{1, 4});
+        CHECK(s.width_px == 640); // reports: 640x360
+        CHECK(s.height_px == 360);
+    }
+    {
+        const demo::Settings d = demo::defaults(demo::kLensReport);
+        CHECK(d.grids == std::vector<int>{4, 8, 16, 32});
+        CHECK(d.supersampling == 4);
+        CHECK(d.runs == 5);
+        const demo::Settings s = settings_of(demo::kLensReport, {"--grids", "4,8", "--supersampling", "2"});
+        CHECK(s.grids == std::vector<int>{4, 8});
+        CHECK(s.supersampling == 2);
+        CHECK(s.runs == 5); // untouched
+        CHECK(settings_of(demo::kLensReport, {"--runs", "3"}).runs == 3);
+    }
+    {
+        const demo::Settings d = demo::defaults(demo::kNonAffineReport);
+        CHECK(d.max_edges_m == std::vector<float>{0.0f, 1.0f, 0.5f, 0.25f, 0.1f});
+        const demo::Settings s = settings_of(demo::kNonAffineReport, {"--edges", "0,0.5", "--runs", "7"});
+        CHECK(s.max_edges_m == std::vector<float>{0.0f, 0.5f}); // metres, 0 and 0.5 exact in float
+        CHECK(s.runs == 7);
+    }
+}
+
+// The effect rows (demo/effect_options.hpp) write render::EffectParams; the
+// values are the option text's, metres where the name says so, written
+// here by hand; exact float equality: each is parsed from the same decimal.
+TEST_CASE("demo options: each effect option writes the value it was given") {
+    for (demo::Command command : {demo::kRender, demo::kWindow}) {
+        const std::string command_text = demo::command_name(command);
+        CAPTURE(command_text);
+        const demo::Settings d = demo::defaults(command);
+        CHECK(d.tile_columns == 3); // default 3x2
+        CHECK(d.tile_rows == 2);
+        CHECK(!d.tile_borders);
+        CHECK(d.mirror_method == render::MirrorMethod::Oblique);
+        CHECK(d.curved.patches == 4);
+        CHECK(d.curved.shape == render::CapShape::Sphere);
+        CHECK(!d.sagitta_given);
+        CHECK(d.lens_grid == 16);
+        CHECK(d.lens_power == 2.0f);
+        CHECK(!d.fog.has_value());
+        CHECK(!d.stereo);
+        CHECK(d.ipd_m == 0.064f);
+        CHECK(!d.convergence_m.has_value());
+        CHECK(d.recursion_depth == 4);
+        CHECK(d.recursion_links == render::LinkSet::Mirrors);
+        CHECK(!d.mirror_place.plane.has_value());
+        CHECK(!d.mirror_place.rect.has_value());
+
+        const demo::Settings t = settings_of(command, {"--tiles", "4x3", "--tile-borders", "--mirror", "rectangle"});
+        CHECK(t.tile_columns == 4);
+        CHECK(t.tile_rows == 3);
+        CHECK(t.tile_borders);
+        CHECK(t.mirror_method == render::MirrorMethod::Rectangle);
+        CHECK(t.lens_grid == 16); // untouched
+        CHECK(settings_of(command, {"--mirror", "reflect_only"}).mirror_method == render::MirrorMethod::ReflectOnly);
+
+        const demo::Settings plane = settings_of(command, {"--mirror-plane", "0,1,0,-0.5"});
+        REQUIRE(plane.mirror_place.plane.has_value());
+        CHECK(plane.mirror_place.plane->x == 0.0f);
+        CHECK(plane.mirror_place.plane->y == 1.0f);
+        CHECK(plane.mirror_place.plane->z == 0.0f);
+        CHECK(plane.mirror_place.plane->w == -0.5f);
+        CHECK(!plane.mirror_place.rect.has_value());
+
+        const demo::Settings rect = settings_of(command, {"--mirror-rect", "1,2,3,4,5,6,7,8,9"});
+        REQUIRE(rect.mirror_place.rect.has_value());
+        CHECK(*rect.mirror_place.rect == std::array<float, 9>{1, 2, 3, 4, 5, 6, 7, 8, 9});
+
+        const demo::Settings curved = settings_of(command, {"--patches", "8", "--sagitta", "0.1", "--cap", "cylinder"});
+        CHECK(curved.curved.patches == 8);
+        CHECK(curved.curved.sagitta_m == 0.1f);
+        CHECK(curved.sagitta_given);
+        CHECK(curved.curved.shape == render::CapShape::Cylinder);
+
+        const demo::Settings lens = settings_of(command, {"--lens-grid", "8", "--lens-power", "1.5",
+                                                          "--lens-center", "0.1,-0.2", "--lens-radius", "0.3"});
+        CHECK(lens.lens_grid == 8);
+        CHECK(lens.lens_power == 1.5f);
+        REQUIRE(lens.fit.lens_center.has_value());
+        CHECK(lens.fit.lens_center->x == 0.1f);
+        CHECK(lens.fit.lens_center->y == -0.2f);
+        REQUIRE(lens.fit.lens_radius.has_value());
+        CHECK(*lens.fit.lens_radius == 0.3f);
+        CHECK(!lens.fit.slit_m.has_value()); // untouched
+
+        const demo::Settings nonaffine = settings_of(command, {"--slit", "2", "--pivot", "5"});
+        REQUIRE(nonaffine.fit.slit_m.has_value());
+        CHECK(*nonaffine.fit.slit_m == 2.0f);
+        REQUIRE(nonaffine.fit.pivot_m.has_value());
+        CHECK(*nonaffine.fit.pivot_m == 5.0f);
+        CHECK(!nonaffine.fit.lens_center.has_value());
+
+        const demo::Settings fog = settings_of(command, {"--fog"});
+        REQUIRE(fog.fog.has_value());
+        CHECK(!fog.fog->color.has_value()); // the sky
+        CHECK(!fog.fog->density_per_m.has_value());
+        const demo::Settings fog_set = settings_of(command, {"--fog-density", "0.05", "--fog-color", "0.5,0.6,0.7"});
+        REQUIRE(fog_set.fog.has_value()); // implies --fog
+        REQUIRE(fog_set.fog->density_per_m.has_value());
+        CHECK(*fog_set.fog->density_per_m == 0.05f);
+        REQUIRE(fog_set.fog->color.has_value());
+        CHECK(fog_set.fog->color->r == 0.5f);
+        CHECK(fog_set.fog->color->g == 0.6f);
+        CHECK(fog_set.fog->color->b == 0.7f);
+
+        const demo::Settings stereo = settings_of(command, {"--stereo", "--ipd-m", "0.1", "--convergence-m", "4"});
+        CHECK(stereo.stereo);
+        CHECK(stereo.ipd_m == 0.1f);
+        REQUIRE(stereo.convergence_m.has_value());
+        CHECK(*stereo.convergence_m == 4.0f);
+
+        const demo::Settings recursion = settings_of(command, {"--recursion-depth", "2", "--recursion-links", "portals"});
+        CHECK(recursion.recursion_depth == 2);
+        CHECK(recursion.recursion_links == render::LinkSet::Portals);
+        CHECK(settings_of(command, {"--recursion-depth", "0"}).recursion_depth == 0);
+    }
+    // The reports' share of the effect rows.
+    const demo::Settings c = settings_of(demo::kCurvedReport, {"--sagitta", "0.25", "--cap", "cylinder"});
+    CHECK(c.curved.sagitta_m == 0.25f);
+    CHECK(c.curved.shape == render::CapShape::Cylinder);
+    CHECK(settings_of(demo::kLensReport, {"--lens-power", "1.5"}).lens_power == 1.5f);
+    const demo::Settings n = settings_of(demo::kNonAffineReport, {"--slit", "2.6", "--pivot", "8"});
+    REQUIRE(n.fit.slit_m.has_value());
+    CHECK(*n.fit.slit_m == 2.6f);
+    REQUIRE(n.fit.pivot_m.has_value());
+    CHECK(*n.fit.pivot_m == 8.0f);
+}
+
 // The renderer draws up to kMaxTiles tiles (128 x 128), at most one per
 // pixel; the window's + and - keys step within 1..16 per direction, which
 // is no reason to refuse a larger start: both commands take the same bound.
@@ -150,6 +359,7 @@ TEST_CASE("demo options: --tiles has the same bound in render and window") {
         const auto parsed = demo::parse_options(command, {demo::command_name(command), "--tiles", "20x2"});
         REQUIRE(std::holds_alternative<demo::Settings>(parsed));
         CHECK(std::get<demo::Settings>(parsed).tile_columns == 20);
+        CHECK(std::get<demo::Settings>(parsed).tile_rows == 2);
         CHECK(outcome(command, {"--tiles", "128x128"}) == "ok");
         CHECK(outcome(command, {"--tiles", "129x128"}) ==
               "error: --tiles 129x128 is 16512 tiles, over the limit of 16384");
