@@ -145,7 +145,9 @@ TEST_CASE("vectors: --help prints usage and exits 0; other arguments are exit 2"
     // Each refusal names the first argument, the one that cannot be taken.
     const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
         {{"-h"}, "-h"}, {{"--help", "x"}, "--help"}, {{"request.json"}, "request.json"}, {{""}, ""}};
-    for (const auto& [args, named] : refused) {
+    for (const auto& row : refused) {
+        const std::vector<std::string>& args = row.first;
+        const std::string& named = row.second; // not a structured binding: CAPTURE's lambda takes it (clang, C++17)
         CAPTURE(named);
         const Run r = cli(args, R"({"cases": []})");
         CHECK(r.status == 2);
