@@ -225,7 +225,8 @@ Result<VolumeFit<T>> fit_volume(const VolumeTarget<T>& target, T far_distance_m,
         }
         Vec3<T> step;
         if (!solve_positive_definite(system, gradient, step)) {
-            // Twice the shift that makes it semi-definite, at least 1e-2.
+            // Twice the shift that makes it semi-definite (in units of
+            // `scale`), and at least tenfold the damping tried (1e-2 at first).
             const T needed = -smallest_eigenvalue(Mat3<T>(-hessian)) / scale;
             const T next = std::max(T(2) * needed, damping > T(0) ? damping * T(10) : T(1e-2));
             if (!(next > damping) || !std::isfinite(next) || ++shifts > 60) {

@@ -5,8 +5,6 @@
 
 #include "frustum/crop.hpp"
 
-#include <limits>
-
 namespace frustum::detail {
 
 // Every pixel edge 0..count of `count` tiles across `size` pixels into
