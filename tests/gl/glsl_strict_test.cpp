@@ -8,10 +8,11 @@
 // reference).
 #include "render_test_support.hpp"
 
+#include <support/child_process.hpp>
+
 #include <doctest/doctest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -52,24 +53,22 @@ void GL_APIENTRY record_shader_source(GLuint id, GLsizei count, const GLchar* co
 }
 
 // glslangValidator's verdict on `text` as a `stage` shader: empty when valid.
-std::string validate(const fs::path& folder, const std::string& name, GLenum stage, const std::string& text) {
+// (tests/support's runner: no shell, at most its 120 s, then a failure naming the command.)
+std::string validate(const std::string& validator, const fs::path& folder, const std::string& name, GLenum stage,
+                     const std::string& text) {
     const fs::path path = folder / (name + (stage == GL_VERTEX_SHADER ? ".vert" : ".frag"));
     std::ofstream(path) << text;
-    const fs::path log = folder / (name + ".log");
-    const std::string command = "glslangValidator " + path.string() + " > " + log.string() + " 2>&1";
-    if (std::system(command.c_str()) == 0) {
-        return {};
-    }
-    std::ifstream in(log);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    support::Launch launch;
+    launch.args = {path.string()};
+    const support::Outcome verdict = support::run(validator, launch);
+    return verdict.exit_status == 0 && verdict.signal == 0 ? std::string() : verdict.out + verdict.err;
 }
-
-bool have_validator() { return std::system("glslangValidator --version > /dev/null 2>&1") == 0; }
 
 } // namespace
 
 TEST_CASE("every shader the renderer composes is valid GLSL ES 3.00 for glslangValidator") {
-    REQUIRE_MESSAGE(have_validator(), "glslangValidator not found (glslang-tools, scripts/install-deps.sh)");
+    const std::string validator = support::find_on_path("glslangValidator");
+    REQUIRE_MESSAGE(!validator.empty(), "glslangValidator not found (glslang-tools, scripts/install-deps.sh)");
     auto env = gl_test::make_environment(gl::Backend::Egl);
     if (!env) {
         return;
@@ -106,14 +105,15 @@ TEST_CASE("every shader the renderer composes is valid GLSL ES 3.00 for glslangV
         if (!distinct.insert(source.text).second) {
             continue;
         }
-        const std::string verdict = validate(folder, "composed-" + std::to_string(i), source.stage, source.text);
+        const std::string verdict = validate(validator, folder, "composed-" + std::to_string(i), source.stage, source.text);
         CHECK_MESSAGE(verdict.empty(), "composed shader " << i << ":\n" << source.text << "\n" << verdict);
     }
     MESSAGE(distinct.size() << " distinct composed shaders checked");
 }
 
 TEST_CASE("every GLSL file in shaders/ with a #version line is valid GLSL ES 3.00") {
-    REQUIRE_MESSAGE(have_validator(), "glslangValidator not found (glslang-tools, scripts/install-deps.sh)");
+    const std::string validator = support::find_on_path("glslangValidator");
+    REQUIRE_MESSAGE(!validator.empty(), "glslangValidator not found (glslang-tools, scripts/install-deps.sh)");
     const fs::path folder = render_test::output_dir() / "glsl_strict";
     fs::create_directories(folder);
     int checked = 0;
@@ -129,7 +129,7 @@ TEST_CASE("every GLSL file in shaders/ with a #version line is valid GLSL ES 3.0
         if (text.find("frustum_") != std::string::npos) {
             continue; // calls frustum.glsl: valid only composed (the case above)
         }
-        const std::string verdict = validate(folder, "file-" + entry.path().stem().string(),
+        const std::string verdict = validate(validator, folder, "file-" + entry.path().stem().string(),
                                              extension == ".vert" ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER, text);
         CHECK_MESSAGE(verdict.empty(), verdict);
         ++checked;

@@ -1,12 +1,13 @@
 // Result<T> and Status: the accessors that keep a failed result from being
 // read as a value. A misuse aborts with one line on stderr (checked in a
-// child process where fork() exists), the rest are plain value checks.
+// child process where fork() exists, tests/support's runner with its
+// timeout), the rest are plain value checks.
 #include "support.hpp"
 
 #if defined(__unix__) && !defined(__EMSCRIPTEN__)
+#include <support/child_process.hpp>
+
 #include <csignal>
-#include <sys/wait.h>
-#include <unistd.h>
 #define MTEST_HAS_FORK 1
 #else
 #define MTEST_HAS_FORK 0
@@ -43,28 +44,16 @@ struct Death {
     std::string stderr_text;
 };
 
-// Runs `body` in a child; reports whether it died of SIGABRT and what it wrote to stderr.
-Death run_in_child(const std::function<void()>& body) {
-    int fds[2];
-    REQUIRE(pipe(fds) == 0);
-    const pid_t pid = fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-        close(fds[0]);
-        dup2(fds[1], 2);
-        // The default action, not doctest's crash handler: the child must
-        // die of SIGABRT without printing a report of the parent's run.
-        signal(SIGABRT, SIG_DFL);
+// Runs `body` in a child (tests/support's runner: at most 60 s, then a
+// failure naming `what`); reports whether it died of SIGABRT and what it
+// wrote to stderr.
+Death run_in_child(const std::string& what, const std::function<void()>& body) {
+    const support::Outcome child = support::run_function(what, [&body] {
         body();
-        _exit(0); // the misuse did not stop the program: the parent sees exit 0
-    }
-    close(fds[1]);
+        return std::string(); // the misuse did not stop the program: the parent sees exit 0
+    }, 60);
     Death death;
-    char buffer[512];
-    for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) > 0;) {
-        death.stderr_text.append(buffer, static_cast<std::size_t>(n));
-    }
-    close(fds[0]);
+    death.stderr_text = child.err;
     // Under qemu-user (make test-arm) the emulator adds its own line about
     // the signal to the child's stderr: not the program's output.
     const std::string qemu_note = "qemu: uncaught target signal";
@@ -72,9 +61,7 @@ Death run_in_child(const std::function<void()>& body) {
         const std::size_t end = death.stderr_text.find('\n', at);
         death.stderr_text.erase(at, end == std::string::npos ? std::string::npos : end - at + 1);
     }
-    int status = 0;
-    REQUIRE(waitpid(pid, &status, 0) == pid);
-    death.aborted = WIFSIGNALED(status) && WTERMSIG(status) == SIGABRT;
+    death.aborted = child.signal == SIGABRT;
     return death;
 }
 #endif
@@ -122,7 +109,7 @@ TEST_CASE("Result: -> reads a member of the value") {
 
 #if MTEST_HAS_FORK
 TEST_CASE("Result: reading a failed result aborts with its error on stderr") {
-    const auto value = run_in_child([] {
+    const auto value = run_in_child("bad.value()", [] {
         const auto bad = parsed(false);
         std::printf("%d", bad.value());
     });
@@ -130,25 +117,25 @@ TEST_CASE("Result: reading a failed result aborts with its error on stderr") {
     CHECK(value.stderr_text ==
           "frustum::Result: value() of a failed result: frustum::parse(): needs a digit, got x\n");
 
-    const auto star = run_in_child([] {
+    const auto star = run_in_child("*bad", [] {
         auto bad = parsed(false);
         std::printf("%d", *bad);
     });
     CHECK(star.aborted);
-    const auto arrow = run_in_child([] {
+    const auto arrow = run_in_child("bad->size()", [] {
         const Result<std::string> bad = Error{"frustum::f(): no"};
         std::printf("%zu", bad->size());
     });
     CHECK(arrow.aborted);
     CHECK(arrow.stderr_text == "frustum::Result: value() of a failed result: frustum::f(): no\n");
 
-    const auto taken = run_in_child([] {
+    const auto taken = run_in_child("good.take_error()", [] {
         auto good = parsed(true);
         std::printf("%s", good.take_error().message.c_str());
     });
     CHECK(taken.aborted);
     CHECK(taken.stderr_text == "frustum::Result: take_error() of a successful result\n");
-    const auto status = run_in_child([] {
+    const auto status = run_in_child("Status{}.take_error()", [] {
         Status fine;
         std::printf("%s", fine.take_error().message.c_str());
     });

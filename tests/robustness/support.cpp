@@ -7,10 +7,6 @@
 #include <gl/context.hpp>
 
 #include <algorithm>
-#include <cerrno>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace rob {
 
@@ -27,37 +23,18 @@ std::vector<std::string> list_dir(const fs::path& dir) {
 }
 
 Isolated isolated(const std::function<std::string()>& work, unsigned timeout_s) {
-    int fds[2];
-    REQUIRE(::pipe(fds) == 0);
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-        ::close(fds[0]);
-        ::alarm(timeout_s);
-        const std::string value = work();
-        for (std::size_t done = 0; done < value.size();) {
-            const ssize_t n = ::write(fds[1], value.data() + done, value.size() - done);
-            if (n <= 0) ::_exit(125);
-            done += std::size_t(n);
-        }
-        ::_exit(0); // no atexit handlers, no doctest report from the child
-    }
-    ::close(fds[1]);
+    const support::Outcome child = support::run_function("work isolated in a child", work, int(timeout_s));
     Isolated result;
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
-        if (n < 0 && errno == EINTR) continue;
-        REQUIRE(n > 0);
-        result.value.append(buffer, std::size_t(n));
+    result.value = child.value;
+    result.finished = child.exit_status == 0 && !child.timed_out;
+    if (child.timed_out) {
+        result.how = "killed after the timeout of " + std::to_string(timeout_s) + " s";
+    } else if (child.signal != 0) {
+        result.how = "killed by signal " + std::to_string(child.signal);
+    } else if (!result.finished) {
+        result.how = "exit status " + std::to_string(child.exit_status);
     }
-    ::close(fds[0]);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-        REQUIRE(errno == EINTR);
-    }
-    result.finished = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    if (WIFSIGNALED(status)) result.how = "killed by signal " + std::to_string(WTERMSIG(status));
-    if (WIFEXITED(status) && !result.finished) result.how = "exit status " + std::to_string(WEXITSTATUS(status));
+    if (!result.finished && !child.err.empty()) result.how += "; stderr: " + child.err.substr(0, 2000);
     return result;
 }
 

@@ -18,8 +18,9 @@ namespace rob {
 // Names of the entries of a folder (empty when it does not exist).
 std::vector<std::string> list_dir(const std::filesystem::path& dir);
 
-// `work` run in a forked child, so that a crash, a sanitizer abort or a hang
-// (killed after timeout_s) fails one case instead of the whole suite. The
+// `work` run in a forked child (support::run_function), so that a crash, a
+// sanitizer abort or a hang (the child's group killed after timeout_s, a
+// failure naming the limit) fails one case instead of the whole suite. The
 // child must not use doctest: it only computes the text it returns.
 struct Isolated {
     bool finished = false; // the child returned normally

@@ -9,10 +9,11 @@
 
 #include "../skips.hpp"
 
+#include <support/child_process.hpp>
+
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -43,11 +44,17 @@ inline const std::vector<Variant>& variants() {
 
 inline std::string torus_path() { return std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/torus.gltf"; }
 
-inline bool installed(const std::string& tool) {
-    return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
-}
+inline bool installed(const std::string& tool) { return !support::find_on_path(tool).empty(); }
 
-inline bool run(const std::string& command) { return std::system((command + " > /dev/null 2>&1").c_str()) == 0; }
+// `tool` (found on PATH) with `args`, through tests/support's runner: no
+// shell, at most its 120 s (then a failure naming the command); true when it
+// exited 0. Its output is dropped.
+inline bool run(const std::string& tool, const std::vector<std::string>& args) {
+    support::Launch launch;
+    launch.args = args;
+    const support::Outcome outcome = support::run(support::find_on_path(tool), launch);
+    return outcome.exit_status == 0;
+}
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {
     std::ifstream file(path);
@@ -67,7 +74,7 @@ inline bool make_draco(const std::filesystem::path& dir, const std::string& file
     for (const char* key : {"images", "textures", "samplers"}) bare.erase(key);
     bare["materials"][0]["pbrMetallicRoughness"].erase("baseColorTexture");
     write_json(dir / "torus_untextured.gltf", bare);
-    if (!run("draco_transcoder -i " + (dir / "torus_untextured.gltf").string() + " -o " + (dir / file).string())) {
+    if (!run("draco_transcoder", {"-i", (dir / "torus_untextured.gltf").string(), "-o", (dir / file).string()})) {
         return false;
     }
     nlohmann::json draco = read_json(dir / file);
@@ -90,18 +97,22 @@ inline std::optional<std::filesystem::path> make(const Variant& variant, const s
     }
     const std::string file = variant.file;
     const std::filesystem::path out = dir / file;
-    const std::string gltfpack = "gltfpack -i " + torus_path() + " -o " + out.string();
+    const std::vector<std::string> gltfpack = {"-i", torus_path(), "-o", out.string()};
+    const auto with = [&gltfpack](std::vector<std::string> more) {
+        more.insert(more.begin(), gltfpack.begin(), gltfpack.end());
+        return more;
+    };
     bool made = false;
     if (file == "torus_quantized.gltf" || file == "torus_quantized_int.gltf") {
         made = std::filesystem::exists(out) ||
-               run("python3 " + std::string(FRUSTUM_SOURCE_DIR) + "/scripts/make_feature_gltf.py --quantized " +
-                   dir.string());
+               run("python3", {std::string(FRUSTUM_SOURCE_DIR) + "/scripts/make_feature_gltf.py", "--quantized",
+                               dir.string()});
     } else if (file == "torus_gltfpack.gltf") {
-        made = run(gltfpack);
+        made = run("gltfpack", gltfpack);
     } else if (file == "torus_meshopt.gltf" || file == "torus_meshopt.glb") {
-        made = run(gltfpack + " -c");
+        made = run("gltfpack", with({"-c"}));
     } else if (file == "torus_meshopt_float.gltf") {
-        made = run(gltfpack + " -c -noq");
+        made = run("gltfpack", with({"-c", "-noq"}));
     } else if (file == "torus_draco.gltf") {
         made = make_draco(dir, file);
     }

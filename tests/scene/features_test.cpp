@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <scene/load_gltf.hpp>
+#include <support/child_process.hpp>
 
 #include <glm/glm.hpp>
 
@@ -178,14 +179,16 @@ TEST_CASE("a required extension that is not supported is refused by name before 
 }
 
 TEST_CASE("the generated files are what scripts/make_feature_gltf.py writes, and the folders hold nothing else") {
-    if (std::system("python3 -c pass > /dev/null 2>&1") != 0) {
+    const std::string python = support::find_on_path("python3");
+    if (python.empty()) {
         test_skips::skip("python3 is not available");
         return;
     }
     scene_test::TempDir dir;
-    const std::string command = "python3 " + std::string(FRUSTUM_SOURCE_DIR) + "/scripts/make_feature_gltf.py " +
-                                dir.path().string();
-    REQUIRE(std::system(command.c_str()) == 0);
+    support::Launch launch; // tests/support's runner: at most 120 s, then a failure naming the command
+    launch.args = {std::string(FRUSTUM_SOURCE_DIR) + "/scripts/make_feature_gltf.py", dir.path().string()};
+    const support::Outcome made = support::run(python, launch);
+    REQUIRE_MESSAGE(made.exit_status == 0, made.err);
     const std::filesystem::path repository(FRUSTUM_SOURCE_DIR);
     std::size_t compared = 0;
     for (const char* folder : {"tests/data/gltf-features", "tests/data/gltf-models", "tests/fuzz/corpus/gltf"}) {

@@ -1,8 +1,10 @@
 // assets/showcase.gltf (made by scripts/make_showcase.py) loads and has the
 // objects the demo relies on.
+#include "../skips.hpp"
 #include "helpers.hpp"
 
 #include "scene/load_gltf.hpp"
+#include "support/child_process.hpp"
 
 #include <doctest/doctest.h>
 
@@ -126,15 +128,17 @@ TEST_CASE("showcase: contents, mirror, lens and cameras") {
 TEST_CASE("showcase: the committed file is small and what the script generates") {
     const scene_test::Bytes committed = scene_test::read_bytes(scene_test::showcase_path());
     CHECK(committed.size() < 200u * 1024u);
-    if (std::system("python3 -c pass > /dev/null 2>&1") != 0) {
-        MESSAGE("python3 not found: not regenerating the showcase");
+    const std::string python = support::find_on_path("python3");
+    if (python.empty()) {
+        test_skips::skip("python3 not found: the showcase is not regenerated");
         return;
     }
     scene_test::TempDir dir;
     const std::string regenerated = (dir.path() / "showcase.gltf").string();
-    const std::string command = "python3 " FRUSTUM_SOURCE_DIR "/scripts/make_showcase.py --out " +
-                                regenerated + " > /dev/null";
-    REQUIRE(std::system(command.c_str()) == 0);
+    support::Launch launch; // tests/support's runner: at most 120 s, then a failure naming the command
+    launch.args = {FRUSTUM_SOURCE_DIR "/scripts/make_showcase.py", "--out", regenerated};
+    const support::Outcome made = support::run(python, launch);
+    REQUIRE_MESSAGE(made.exit_status == 0, made.err);
     // If this fails, run scripts/make_showcase.py and commit assets/showcase.gltf.
     CHECK(scene_test::read_bytes(regenerated) == committed);
 }

@@ -4,6 +4,7 @@
 // after which its whole process group is killed and the test fails.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -43,9 +44,26 @@ struct Outcome {
     int signal = 0;
     std::string out, err; // out is empty when stdout_file was given
     long peak_rss_kb = 0; // the child's maximum resident set (wait4 rusage)
+    std::string value;    // run_function(): what the body returned
+    bool timed_out = false; // run_function(): killed at the timeout (the test already failed)
 };
 
-// Runs `program` and waits for it, at most launch.timeout_s.
+// Runs `program` and waits for it, at most launch.timeout_s; past it, FAIL
+// (the test case ends) naming the command and the limit.
 Outcome run(const std::string& program, const Launch& launch);
+
+// Runs `body` in a forked child (no exec: the test's own code, e.g. a call
+// that must abort, or one that may crash or hang), in its own process group,
+// stdout and stderr captured, SIGABRT, SIGSEGV, SIGFPE, SIGILL and SIGBUS at
+// their default actions (so that the child dies of its signal without
+// doctest's report of the parent's run). The body must not use doctest; what
+// it returns comes back as Outcome::value (exit status 0). Waits at most
+// `timeout_s`; past it the child's group is killed and the check fails
+// (FAIL_CHECK, so that a table of cases goes on) naming `what` and the
+// limit, with timed_out set. Needs fork(): not under emscripten.
+Outcome run_function(const std::string& what, const std::function<std::string()>& body, int timeout_s = 120);
+
+// `name` found in a folder of PATH (an executable file), else empty.
+std::string find_on_path(const std::string& name);
 
 } // namespace support

@@ -29,7 +29,7 @@ Child run(const std::string& program, const std::vector<std::string>& args,
           const std::map<std::string, std::optional<std::string>>& environment = {},
           int timeout_s = kChildTimeoutS);
 
-// `name` found on PATH, else empty.
-std::string find_on_path(const std::string& name);
+// `name` found on PATH, else empty (tests/support).
+using support::find_on_path;
 
 } // namespace window_test
