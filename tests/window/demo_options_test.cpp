@@ -9,9 +9,12 @@
 
 #include <demo/options.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -53,6 +56,40 @@ demo::Settings settings_of(demo::Command command, const std::vector<std::string>
 }
 
 const std::vector<std::string> kBadValues = {"", "0", "-1", "x!", "1e30", "3,", "0x0"};
+
+// The help text of `name` in `command`'s --help, as frustum-demo prints it:
+// the row's lines (after "  --name VALUE") trimmed and joined with spaces.
+std::string help_of(demo::Command command, const std::string& name, const std::string& value) {
+    const window_test::Child child = window_test::run(kDemo, {demo::command_name(command), "--help"});
+    REQUIRE(child.exit_status == 0);
+    const std::string head = "\n  " + name + " " + value + " ";
+    const std::size_t at = child.out.find(head);
+    REQUIRE_MESSAGE(at != std::string::npos, name << " not in the help of " << demo::command_name(command));
+    const std::size_t end = std::min(child.out.find("\n  --", at + 1), child.out.find("\n\n", at + 1));
+    std::istringstream lines(child.out.substr(at + head.size(), end - at - head.size()));
+    std::string text;
+    for (std::string line; std::getline(lines, line);) {
+        line.erase(0, line.find_first_not_of(' '));
+        text += (text.empty() ? "" : " ") + line;
+    }
+    return text;
+}
+
+// The parts joined with `separator` ("a | b | c"), to compare with a help text.
+std::string joined(const std::vector<std::string>& parts, const std::string& separator) {
+    std::string text;
+    for (const std::string& part : parts) text += (text.empty() ? "" : separator) + part;
+    return text;
+}
+
+// The text between `before` and the next `after`, in `text`.
+std::string between(const std::string& text, const std::string& before, const std::string& after) {
+    const std::size_t at = text.find(before);
+    REQUIRE_MESSAGE(at != std::string::npos, "'" << before << "' not in: " << text);
+    const std::size_t end = text.find(after, at + before.size());
+    REQUIRE_MESSAGE(end != std::string::npos, "'" << after << "' not in: " << text);
+    return text.substr(at + before.size(), end - at - before.size());
+}
 
 } // namespace
 
@@ -365,6 +402,124 @@ TEST_CASE("demo options: --tiles has the same bound in render and window") {
               "error: --tiles 129x128 is 16512 tiles, over the limit of 16384");
         CHECK(outcome(command, {"--tiles", "8193x1"}).find("--tiles must be NxM") != std::string::npos);
     }
+}
+
+// The value lists, written here by hand: each accepted value parses to its
+// enum value, a near miss is refused, and the help lists exactly these.
+TEST_CASE("demo options: --effect accepts exactly the effects its help lists, each parsed to its effect") {
+    using Effect = render::Effect; // (app/plan's namespace)
+    const std::vector<std::pair<std::string, Effect>> effects = {
+        {"plain", Effect::Plain},   {"mirror", Effect::Mirror},       {"tiles", Effect::Tiles},
+        {"frustum", Effect::Frustum}, {"curved", Effect::Curved},     {"lens", Effect::Lens},
+        {"nonaffine", Effect::NonAffine}, {"portal", Effect::Portal}, {"recursion", Effect::Recursion}};
+    std::vector<std::string> names;
+    std::vector<Effect> all;
+    for (const auto& [name, effect] : effects) {
+        CAPTURE(name);
+        names.push_back(name);
+        all.push_back(effect);
+        CHECK(settings_of(demo::kRender, {"--effect", name}).effects == std::vector<Effect>{effect});
+        CHECK(settings_of(demo::kWindow, {"--effect", name}).effects == std::vector<Effect>{effect});
+        std::string upper = name;
+        for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        CHECK(outcome(demo::kRender, {"--effect", upper}).rfind("error: unknown effect '" + upper + "'", 0) == 0);
+    }
+    CHECK(std::vector<Effect>(std::begin(render::kAllEffects), std::end(render::kAllEffects)) == all);
+    CHECK(settings_of(demo::kRender, {"--effect", "all"}).effects == all);
+    CHECK(demo::defaults(demo::kRender).effects == all);
+    CHECK(demo::defaults(demo::kWindow).effects == std::vector<Effect>{Effect::Plain});
+    CHECK(outcome(demo::kWindow, {"--effect", "all"}).rfind("error: unknown effect 'all'", 0) == 0);
+    CHECK(outcome(demo::kRender, {"--effect", "plain,mirror"}).rfind("error: unknown effect", 0) == 0);
+    // render: "plain | mirror | ... | all (default all)"; window: "first effect: plain, mirror, ... (default plain)".
+    std::vector<std::string> with_all = names;
+    with_all.push_back("all");
+    CHECK(between(" " + help_of(demo::kRender, "--effect", "E"), " ", " (default all)") == joined(with_all, " | "));
+    CHECK(between(help_of(demo::kWindow, "--effect", "E"), "first effect: ", " (default plain)") ==
+          joined(names, ", "));
+    // The refusal names the same list.
+    CHECK(outcome(demo::kRender, {"--effect", "x"}) ==
+          "error: unknown effect 'x' (expected plain, mirror, tiles, frustum, curved, lens, nonaffine, portal, "
+          "recursion or all)");
+}
+
+TEST_CASE("demo options: --backend accepts exactly egl and osmesa, as its help lists") {
+    const std::vector<std::pair<std::string, gl::Backend>> backends = {{"egl", gl::Backend::Egl},
+                                                                       {"osmesa", gl::Backend::OsMesa}};
+    std::vector<std::string> names;
+    for (demo::Command command : {demo::kRender, demo::kLensReport, demo::kCurvedReport, demo::kNonAffineReport}) {
+        const std::string command_text = demo::command_name(command);
+        CAPTURE(command_text);
+        CHECK(!demo::defaults(command).backend.has_value()); // unset: EGL, else OSMesa with a note
+        for (const auto& [name, backend] : backends) {
+            CAPTURE(name);
+            const demo::Settings s = settings_of(command, {"--backend", name});
+            REQUIRE(s.backend.has_value());
+            CHECK(*s.backend == backend);
+        }
+        for (const std::string near_miss : {"webgl", "EGL", "OSMesa", "gles", "egl,osmesa"}) {
+            CHECK(outcome(command, {"--backend", near_miss}) ==
+                  "error: unknown backend '" + near_miss + "' (expected egl or osmesa)");
+        }
+        CHECK(between(" " + help_of(command, "--backend", "B"), " ", " (default") == "egl | osmesa");
+    }
+}
+
+TEST_CASE("demo options: --keys parses every key its help names, any printable character, Shift+, in order") {
+    using gl::Key;
+    const auto keys = [](const std::string& list) { return settings_of(demo::kWindow, {"--keys", list}).keys; };
+    // The named keys, by hand.
+    const std::vector<std::pair<std::string, Key>> named = {
+        {"Left", Key::Left}, {"Right", Key::Right}, {"Up", Key::Up}, {"Down", Key::Down}, {"Esc", Key::Escape}};
+    std::vector<std::string> names;
+    for (const auto& [name, key] : named) {
+        CAPTURE(name);
+        names.push_back(name);
+        for (const bool shift : {false, true}) {
+            const auto parsed = keys(shift ? "Shift+" + name : name);
+            REQUIRE(parsed.size() == 1u);
+            CHECK(parsed[0].key == key);
+            CHECK(parsed[0].character == 0);
+            CHECK(parsed[0].mods.shift == shift);
+            CHECK(!parsed[0].mods.control);
+            CHECK(!parsed[0].mods.alt);
+        }
+    }
+    // Every printable ASCII character but the space, letters as their upper case.
+    for (int c = 33; c < 127; ++c) {
+        const std::string item(1, char(c));
+        CAPTURE(item);
+        const char expected = (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : char(c);
+        for (const bool shift : {false, true}) {
+            // Items end at the first comma after their first character, so
+            // "Shift+," is the item "Shift+" (refused, below): the comma only unshifted.
+            if (shift && c == ',') continue;
+            const auto parsed = keys(shift ? "Shift+" + item : item);
+            REQUIRE(parsed.size() == 1u);
+            CHECK(parsed[0].key == Key::Character);
+            CHECK(parsed[0].character == expected);
+            CHECK(parsed[0].mods.shift == shift);
+        }
+    }
+    // A list, one press per item, in order; the comma key last.
+    const auto list = keys("1,Shift+Left,+,h,Esc,,");
+    REQUIRE(list.size() == 6u);
+    CHECK((list[0].key == Key::Character && list[0].character == '1' && !list[0].mods.shift));
+    CHECK((list[1].key == Key::Left && list[1].mods.shift));
+    CHECK((list[2].key == Key::Character && list[2].character == '+'));
+    CHECK((list[3].key == Key::Character && list[3].character == 'H' && !list[3].mods.shift));
+    CHECK(list[4].key == Key::Escape);
+    CHECK((list[5].key == Key::Character && list[5].character == ','));
+    // Not keys: what the help does not name.
+    for (const std::string bad : {"", "left", "Enter", "PageUp", "Home", "Space", " ", "Shift+", "Shift+Shift+A",
+                                  "Ctrl+A", "ab", "\x7f", "\xc3\xa9", "1,,2", "Shift+,"}) {
+        CAPTURE(bad);
+        CHECK(outcome(demo::kWindow, {"--keys", bad}).rfind("error: --keys must be a comma-separated list", 0) == 0);
+    }
+    // The help: "(a character, Left, Right, Up, Down, Esc)"; the refusal names them and Shift+KEY.
+    CHECK(between(help_of(demo::kWindow, "--keys", "LIST"), "(a character, ", ")") == joined(names, ", "));
+    CHECK(outcome(demo::kWindow, {"--keys", "Tab"}) ==
+          "error: --keys must be a comma-separated list of keys (a character, Left, Right, Up, Down, Esc, "
+          "Shift+KEY), got 'Tab'");
 }
 
 TEST_CASE("demo options: each command's --help lists exactly its rows of the table") {
