@@ -228,8 +228,8 @@ TEST_CASE("render --effect lens --lens-center --lens-radius --lens-power: square
     }
     write_scene(dir.path(), squares);
 
-    // The plain frame: the squares where GLM's projection puts them (the
-    // reference camera is the one frustum-demo uses). Bound 0.35 px;
+    // The plain frame: the squares where GLM's projection puts them (so the
+    // camera built here is the one frustum-demo draws with). Bound 0.35 px;
     // measured 0.23 px (the corner square; MSAA edges weighed by their green).
     const std::vector<double> plain = match(plain_expected, red_blobs(render(dir.path(), "plain", {})));
     MESSAGE("plain: largest distance from the projected centre " << largest(plain) << " px");
