@@ -4,7 +4,7 @@
 // whose centre is the near-plane point X shows the unwarped view at
 // X' = lens_warp(X) (eq. 34), looked up in a texture rendered through the
 // near-plane rectangle u_source_rect_m. Nested rectangles are drawn from the
-// widest to the narrowest (render::draw_lens_reference()); a pixel whose X'
+// widest to the narrowest (reference::draw_lens_reference()); a pixel whose X'
 // falls outside this one keeps what a wider one wrote. This is a second
 // implementation of eq. 34, independent of frustum::lens_warp() and of the
 // tile frustums.

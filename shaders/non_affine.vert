@@ -1,7 +1,7 @@
 #version 300 es
 // Scene geometry through a non-affine frustum (paper section 6, eq. 36),
 // lit by scene.frag. frustum.glsl is inserted after the #version line. The
-// vertices are already in world space (render::WorldGeometry), and the
+// vertices are already in world space (plan::WorldGeometry), and the
 // CPU has dropped every triangle with a vertex whose denominators are not
 // safely negative (docs/non-affine.md).
 

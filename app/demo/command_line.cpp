@@ -46,7 +46,7 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
                      std::to_string(request.budget.max_decoded_bytes >> 20) +
                      " MiB (raise it with --max-memory-mb, or render fewer effects)");
     }
-    const bool lens = std::find(request.effects.begin(), request.effects.end(), render::Effect::Lens) !=
+    const bool lens = std::find(request.effects.begin(), request.effects.end(), plan::Effect::Lens) !=
                       request.effects.end();
     if (lens && request.lens_grid > std::min(request.width_px, request.height_px)) {
         return usage("--lens-grid " + std::to_string(request.lens_grid) +

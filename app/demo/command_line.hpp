@@ -19,7 +19,7 @@
 namespace demo {
 
 // render's settings: --effect all (the default) is every effect, in
-// render::kAllEffects order.
+// plan::kAllEffects order.
 using RenderRequest = Settings;
 
 // args[0] is "render". Every usage error is ExitStatus::UsageError with a

@@ -135,9 +135,9 @@ namespace {
 // eye, the traced references (curved and flat) and the crop box.
 struct CurvedPlan {
     std::unique_ptr<Session> session;
-    std::optional<render::CurvedMirror> mirror;
+    std::optional<plan::CurvedMirror> mirror;
     glm::vec4 eye{0.0f};
-    std::optional<render::TracedFrame> traced, flat_traced; // the flat one: sagitta 0, the sampling floor
+    std::optional<reference::TracedFrame> traced, flat_traced; // the flat one: sagitta 0, the sampling floor
     double trace_ms = 0.0;
     Rect box;
     render::RenderOptions options; // the frame's size, depth and cap; a perfect mirror, as traced
@@ -148,8 +148,8 @@ struct CurvedRow {
     int grid = 0;
     glm::ivec2 tile{0};
     double fit_ms = 0.0, frame_ms = 0.0;
-    render::MirrorError error, flat_error;
-    render::RayAngleError angle;
+    reference::MirrorError error, flat_error;
+    reference::RayAngleError angle;
     int red_px = 0;
     Summary iterations, objective, start;
     int failed = 0;
@@ -172,9 +172,9 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
         return *failure;
     }
     const scene::Scene& scene = session.scene;
-    const render::CurvedMirrorOptions& curved = session.effects.params.curved;
-    const render::Cameras& cameras = *session.cameras;
-    auto mirror = render::CurvedMirror::create(*scene.mirror, curved.shape, curved.sagitta_m);
+    const plan::CurvedMirrorOptions& curved = session.effects.params.curved;
+    const plan::Cameras& cameras = *session.cameras;
+    auto mirror = plan::CurvedMirror::create(*scene.mirror, curved.shape, curved.sagitta_m);
     if (!mirror) {
         return runtime(mirror.error());
     }
@@ -185,7 +185,7 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     }
     reporter.progress("tracing the references");
     const auto trace_start = std::chrono::steady_clock::now();
-    auto traced = render::trace_curved_frame(scene, *plan.mirror, cameras.main.pair, r.width_px, r.height_px, {});
+    auto traced = reference::trace_curved_frame(scene, *plan.mirror, cameras.main.pair, r.width_px, r.height_px, {});
     if (!traced) {
         return runtime(traced.error());
     }
@@ -193,11 +193,12 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
     plan.traced.emplace(std::move(*traced));
     // The same footprint flat (sagitta 0): every patch frustum is then exact
     // (the reflected eye), so its error is the sampling floor.
-    auto flat_mirror = render::CurvedMirror::create(*scene.mirror, curved.shape, 0.0);
+    auto flat_mirror = plan::CurvedMirror::create(*scene.mirror, curved.shape, 0.0);
     if (!flat_mirror) {
         return runtime(flat_mirror.error());
     }
-    auto flat_traced = render::trace_curved_frame(scene, *flat_mirror, cameras.main.pair, r.width_px, r.height_px, {});
+    auto flat_traced =
+        reference::trace_curved_frame(scene, *flat_mirror, cameras.main.pair, r.width_px, r.height_px, {});
     if (!flat_traced) {
         return runtime(flat_traced.error());
     }
@@ -216,7 +217,7 @@ std::variant<CurvedPlan, Failure> plan_report(const RenderRequest& r, const Repo
 
 // Best wall time of kTimedRuns frames (time_runs(): after one warm-up),
 // including the read-back that waits for the GPU.
-frustum::Result<double> best_frame_ms(const Session& s, render::Effect effect, const render::RenderOptions& o,
+frustum::Result<double> best_frame_ms(const Session& s, plan::Effect effect, const render::RenderOptions& o,
                                       image::Image* picture) {
     auto timing = time_runs(kTimedRuns, [&]() -> frustum::Status {
         auto frame = s.renderer->render(effect, *s.cameras, o);
@@ -235,12 +236,13 @@ frustum::Result<double> best_frame_ms(const Session& s, render::Effect effect, c
 }
 
 // Rendered vs traced on the pixels both give to the cap.
-frustum::Result<render::MirrorError> compare_cap(const Session& s, const render::RenderOptions& base,
-                                                 const image::Image& rendered, const render::TracedFrame& reference,
-                                                 std::vector<bool>* mask_out) {
+frustum::Result<reference::MirrorError> compare_cap(const Session& s, const render::RenderOptions& base,
+                                                    const image::Image& rendered,
+                                                    const reference::TracedFrame& reference,
+                                                    std::vector<bool>* mask_out) {
     render::RenderOptions black_options = base;
     black_options.mirror_tint = glm::vec3(0.0f);
-    auto black = s.renderer->render(render::Effect::Curved, *s.cameras, black_options);
+    auto black = s.renderer->render(plan::Effect::Curved, *s.cameras, black_options);
     if (!black) {
         return frustum::Error{black.error()};
     }
@@ -248,7 +250,7 @@ frustum::Result<render::MirrorError> compare_cap(const Session& s, const render:
     for (std::size_t p = 0; p < mask.size(); ++p) {
         mask[p] = mask[p] && reference.on_mirror[p];
     }
-    const auto e = render::compare_on_mask(rendered, reference.picture, mask, kThresholdLsb);
+    const auto e = reference::compare_on_mask(rendered, reference.picture, mask, kThresholdLsb);
     if (mask_out) {
         *mask_out = std::move(mask);
     }
@@ -260,7 +262,7 @@ std::variant<CurvedMeasures, Failure> measure_report(const CurvedReportRequest& 
     const RenderRequest& r = request.render;
     const Session& s = *plan.session;
     CurvedMeasures measures;
-    auto planar_ms = best_frame_ms(s, render::Effect::Mirror, plan.options, nullptr);
+    auto planar_ms = best_frame_ms(s, plan::Effect::Mirror, plan.options, nullptr);
     if (!planar_ms) {
         return runtime(planar_ms.error());
     }
@@ -271,11 +273,11 @@ std::variant<CurvedMeasures, Failure> measure_report(const CurvedReportRequest& 
         row.grid = grid;
         // The fit alone (what the frame does first), best of kTimedRuns.
         row.fit_ms = std::numeric_limits<double>::infinity();
-        std::optional<render::CurvedPlan> fit;
+        std::optional<plan::CurvedPlan> fit;
         for (int run = 0; run < kTimedRuns; ++run) {
             const auto start = std::chrono::steady_clock::now();
-            auto planned = render::plan_curved_mirror(*plan.mirror, glm::dvec3(glm::vec3(plan.eye)),
-                                                      s.scene.world_bounds, grid);
+            auto planned = plan::plan_curved_mirror(*plan.mirror, glm::dvec3(glm::vec3(plan.eye)),
+                                                    s.scene.world_bounds, grid);
             row.fit_ms = std::min(row.fit_ms, milliseconds_since(start));
             if (!planned) {
                 return runtime(planned.error());
@@ -288,7 +290,7 @@ std::variant<CurvedMeasures, Failure> measure_report(const CurvedReportRequest& 
         render::RenderOptions o = plan.options;
         o.curved.patches = grid;
         image::Image picture;
-        auto frame_ms = best_frame_ms(s, render::Effect::Curved, o, &picture);
+        auto frame_ms = best_frame_ms(s, plan::Effect::Curved, o, &picture);
         if (!frame_ms) {
             return runtime(frame_ms.error());
         }
@@ -301,7 +303,7 @@ std::variant<CurvedMeasures, Failure> measure_report(const CurvedReportRequest& 
         row.error = *e;
         render::RenderOptions flat = o;
         flat.curved.sagitta_m = 0.0f;
-        auto flat_picture = s.renderer->render(render::Effect::Curved, *s.cameras, flat);
+        auto flat_picture = s.renderer->render(plan::Effect::Curved, *s.cameras, flat);
         if (!flat_picture) {
             return runtime(flat_picture.error());
         }
@@ -310,10 +312,10 @@ std::variant<CurvedMeasures, Failure> measure_report(const CurvedReportRequest& 
             return runtime(flat_error.error());
         }
         row.flat_error = *flat_error;
-        row.angle = render::lookup_ray_error(*plan.mirror, *fit, s.cameras->main.pair, r.width_px, r.height_px);
+        row.angle = reference::lookup_ray_error(*plan.mirror, *fit, s.cameras->main.pair, r.width_px, r.height_px);
         row.tile = render::curved_tile_size(*plan.mirror, s.cameras->main.pair, grid, r.width_px, r.height_px);
         row.red_px = count_red(picture, mask);
-        for (const render::PatchFrustum& patch : fit->patches) {
+        for (const plan::PatchFrustum& patch : fit->patches) {
             if (patch.pair) {
                 row.iterations.add(patch.iterations);
                 row.objective.add(patch.objective);
@@ -357,7 +359,7 @@ std::string format_report(const RenderRequest& r, const CurvedPlan& plan, const 
     }
     const int compared = measures.rows.empty() ? 0 : measures.rows.back().error.pixels;
     std::ostringstream md;
-    md << "Curved mirror: " << render::to_string(plan.options.curved.shape) << " cap, sagitta "
+    md << "Curved mirror: " << plan::to_string(plan.options.curved.shape) << " cap, sagitta "
        << fixed(plan.options.curved.sagitta_m, 2) << " m, over the scene's mirror; camera '" << plan.session->cameras->main.name << "', " << r.width_px << "x"
        << r.height_px << "; " << compared << " mirror pixels compared; reference traced in "
        << fixed(plan.trace_ms, 0) << " ms; planar mirror frame (oblique): " << fixed(measures.planar_ms, 1)

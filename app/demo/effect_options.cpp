@@ -30,7 +30,7 @@ std::optional<Failure> apply_name(Value& field, const std::string& value, const 
     return std::nullopt;
 }
 
-std::optional<Failure> apply_tiles(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_tiles(plan::EffectParams& s, const std::string& value) {
     const auto tiles = parse_pair(value, kMaxTileSide);
     if (!tiles) {
         return usage("--tiles must be NxM (columns x rows, each >= 1)" + got(value));
@@ -39,17 +39,17 @@ std::optional<Failure> apply_tiles(render::EffectParams& s, const std::string& v
     return std::nullopt;
 }
 
-std::optional<Failure> apply_tile_borders(render::EffectParams& s, const std::string&) {
+std::optional<Failure> apply_tile_borders(plan::EffectParams& s, const std::string&) {
     s.tile_borders = true;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_mirror(render::EffectParams& s, const std::string& value) {
-    return apply_name(s.mirror_method, value, render::parse_mirror_method, "mirror method",
+std::optional<Failure> apply_mirror(plan::EffectParams& s, const std::string& value) {
+    return apply_name(s.mirror_method, value, plan::parse_mirror_method, "mirror method",
                       "oblique, rectangle or reflect_only");
 }
 
-std::optional<Failure> apply_mirror_plane(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_mirror_plane(plan::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 4);
     if (!v || glm::length(glm::vec3((*v)[0], (*v)[1], (*v)[2])) < 1e-6f) {
         return usage("--mirror-plane must be a,b,c,d (the plane a x + b y + c z + d = 0, finite numbers, "
@@ -59,7 +59,7 @@ std::optional<Failure> apply_mirror_plane(render::EffectParams& s, const std::st
     return std::nullopt;
 }
 
-std::optional<Failure> apply_mirror_rect(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_mirror_rect(plan::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 9);
     if (!v || glm::length(glm::cross(glm::vec3((*v)[3], (*v)[4], (*v)[5]), glm::vec3((*v)[6], (*v)[7], (*v)[8]))) <
                   1e-9f) {
@@ -72,17 +72,17 @@ std::optional<Failure> apply_mirror_rect(render::EffectParams& s, const std::str
     return std::nullopt;
 }
 
-std::optional<Failure> apply_patches(render::EffectParams& s, const std::string& value) {
-    const auto patches = parse_count(value, render::kMaxCurvedPatches);
+std::optional<Failure> apply_patches(plan::EffectParams& s, const std::string& value) {
+    const auto patches = parse_count(value, plan::kMaxCurvedPatches);
     if (!patches) {
-        return usage("--patches must be a whole number in 1.." + std::to_string(render::kMaxCurvedPatches) +
+        return usage("--patches must be a whole number in 1.." + std::to_string(plan::kMaxCurvedPatches) +
                      got(value));
     }
     s.curved.patches = *patches;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_sagitta(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_sagitta(plan::EffectParams& s, const std::string& value) {
     const auto sagitta_m = parse_number(value);
     if (!sagitta_m || !(*sagitta_m >= 0.0f)) {
         return usage("--sagitta must be a length in metres >= 0" + got(value));
@@ -92,11 +92,11 @@ std::optional<Failure> apply_sagitta(render::EffectParams& s, const std::string&
     return std::nullopt;
 }
 
-std::optional<Failure> apply_cap(render::EffectParams& s, const std::string& value) {
-    return apply_name(s.curved.shape, value, render::parse_cap_shape, "cap shape", "sphere or cylinder");
+std::optional<Failure> apply_cap(plan::EffectParams& s, const std::string& value) {
+    return apply_name(s.curved.shape, value, plan::parse_cap_shape, "cap shape", "sphere or cylinder");
 }
 
-std::optional<Failure> apply_lens_grid(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_lens_grid(plan::EffectParams& s, const std::string& value) {
     const auto grid = parse_count(value, kMaxLensGrid);
     if (!grid) {
         return usage("--lens-grid must be a whole number in 1.." + std::to_string(kMaxLensGrid) + got(value));
@@ -105,7 +105,7 @@ std::optional<Failure> apply_lens_grid(render::EffectParams& s, const std::strin
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_power(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_lens_power(plan::EffectParams& s, const std::string& value) {
     const auto power = parse_number(value);
     if (!power || !(*power > 0.0f && *power <= kMaxLensPower)) {
         return usage("--lens-power must be a number in (0, 2]" + got(value));
@@ -114,7 +114,7 @@ std::optional<Failure> apply_lens_power(render::EffectParams& s, const std::stri
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_center(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_lens_center(plan::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 2);
     if (!v || std::abs((*v)[0]) > 1.0f || std::abs((*v)[1]) > 1.0f) {
         return usage("--lens-center must be x,y with each in [-1, 1] (0,0 is the frame's centre, 1,1 its top "
@@ -124,7 +124,7 @@ std::optional<Failure> apply_lens_center(render::EffectParams& s, const std::str
     return std::nullopt;
 }
 
-std::optional<Failure> apply_lens_radius(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_lens_radius(plan::EffectParams& s, const std::string& value) {
     const auto radius = parse_number(value);
     if (!radius || !(*radius > 0.0f && *radius <= 1.0f)) {
         return usage("--lens-radius must be a fraction of the frame's half height in (0, 1]" + got(value));
@@ -142,24 +142,24 @@ std::optional<Failure> apply_depth(std::optional<float>& slot, const char* name,
     return std::nullopt;
 }
 
-std::optional<Failure> apply_slit(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_slit(plan::EffectParams& s, const std::string& value) {
     return apply_depth(s.fit.slit_m, "--slit", value);
 }
 
-std::optional<Failure> apply_pivot(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_pivot(plan::EffectParams& s, const std::string& value) {
     return apply_depth(s.fit.pivot_m, "--pivot", value);
 }
 
 // Fog (render/fog_pass.hpp): depth decoded with each pass's own pair.
 
-std::optional<Failure> apply_fog(render::EffectParams& s, const std::string&) {
+std::optional<Failure> apply_fog(plan::EffectParams& s, const std::string&) {
     if (!s.fog) {
-        s.fog = render::FogOptions{};
+        s.fog = plan::FogOptions{};
     }
     return std::nullopt;
 }
 
-std::optional<Failure> apply_fog_density(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_fog_density(plan::EffectParams& s, const std::string& value) {
     const auto density = parse_number(value);
     if (!density || !(*density > 0.0f && *density <= 1000.0f)) {
         return usage("--fog-density must be a number in (0, 1000] per metre" + got(value));
@@ -169,7 +169,7 @@ std::optional<Failure> apply_fog_density(render::EffectParams& s, const std::str
     return std::nullopt;
 }
 
-std::optional<Failure> apply_fog_color(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_fog_color(plan::EffectParams& s, const std::string& value) {
     const auto v = parse_numbers(value, 3);
     if (!v || std::any_of(v->begin(), v->end(), [](float c) { return !(c >= 0.0f && c <= 1.0f); })) {
         return usage("--fog-color must be r,g,b with each in [0, 1] (sRGB-encoded)" + got(value));
@@ -184,12 +184,12 @@ std::optional<Failure> apply_fog_color(render::EffectParams& s, const std::strin
 
 constexpr float kMaxIpdM = 10.0f;
 
-std::optional<Failure> apply_stereo(render::EffectParams& s, const std::string&) {
+std::optional<Failure> apply_stereo(plan::EffectParams& s, const std::string&) {
     s.stereo = true;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_ipd(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_ipd(plan::EffectParams& s, const std::string& value) {
     const auto ipd_m = parse_number(value);
     if (!ipd_m || !(*ipd_m >= 0.0f && *ipd_m <= kMaxIpdM)) {
         return usage("--ipd-m must be a distance in [0, 10] metres" + got(value));
@@ -198,25 +198,25 @@ std::optional<Failure> apply_ipd(render::EffectParams& s, const std::string& val
     return std::nullopt;
 }
 
-std::optional<Failure> apply_convergence(render::EffectParams& s, const std::string& value) {
+std::optional<Failure> apply_convergence(plan::EffectParams& s, const std::string& value) {
     return apply_depth(s.convergence_m, "--convergence-m", value);
 }
 
 
 // The portal and recursion effects (docs/portals.md).
 
-std::optional<Failure> apply_recursion_depth(render::EffectParams& s, const std::string& value) {
-    const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, render::kMaxRecursionDepth);
+std::optional<Failure> apply_recursion_depth(plan::EffectParams& s, const std::string& value) {
+    const auto depth = value == "0" ? std::optional<int>(0) : parse_count(value, plan::kMaxRecursionDepth);
     if (!depth) {
-        return usage("--recursion-depth must be a whole number in 0.." + std::to_string(render::kMaxRecursionDepth) +
+        return usage("--recursion-depth must be a whole number in 0.." + std::to_string(plan::kMaxRecursionDepth) +
                      got(value));
     }
     s.recursion_depth = *depth;
     return std::nullopt;
 }
 
-std::optional<Failure> apply_recursion_links(render::EffectParams& s, const std::string& value) {
-    return apply_name(s.recursion_links, value, render::parse_link_set, "recursion links", "mirrors or portals");
+std::optional<Failure> apply_recursion_links(plan::EffectParams& s, const std::string& value) {
+    return apply_name(s.recursion_links, value, plan::parse_link_set, "recursion links", "mirrors or portals");
 }
 
 
@@ -242,7 +242,7 @@ const std::vector<EffectOption>& effect_options() {
          "and two sides; reflects towards a x b",
          apply_mirror_rect, kRender | kWindow, "0,0,0,1,0,0,0,1,0"},
         {"--patches", "N", "curved effect: the convex cap in G x G patches, 1..64 (default 4)", apply_patches, kRender | kWindow, "8",
-         slider(1, render::kMaxCurvedPatches, true)},
+         slider(1, plan::kMaxCurvedPatches, true)},
         {"--sagitta", "M",
          "curved effect: the cap's bulge at its centre in metres (default a fifth\n"
          "of the mirror's half-diagonal; 0 = the planar mirror; at most half of it)",
@@ -295,7 +295,7 @@ const std::vector<EffectOption>& effect_options() {
         {"--recursion-depth", "N",
          "recursion effect: links passed through, 0..8 (default 4; 0 = the plain\n"
          "frame with the mirrors' or portal's own colours)",
-         apply_recursion_depth, kRender | kWindow, "2", slider(0, render::kMaxRecursionDepth, true)},
+         apply_recursion_depth, kRender | kWindow, "2", slider(0, plan::kMaxRecursionDepth, true)},
         {"--recursion-links", "L",
          "recursion effect: mirrors (two facing mirrors beside the model, default)\n"
          "| portals (a portal whose exit faces its entry)",
@@ -313,7 +313,7 @@ const EffectOption* find_effect_option(std::string_view name) {
     return nullptr;
 }
 
-std::optional<Failure> check_effect_settings(const render::EffectParams& settings) {
+std::optional<Failure> check_effect_settings(const plan::EffectParams& settings) {
     if (settings.mirror_place.plane && settings.mirror_place.rect) {
         return usage("--mirror-plane and --mirror-rect both place the mirror; give one of them");
     }

@@ -31,10 +31,10 @@ inline constexpr float kMaxLensPower = 2.0f;
 inline constexpr int kMaxTileSide = 8192;
 inline constexpr long long kMaxTiles = 16384;
 
-// What the effect options set is render::EffectParams (plan/effect_params.hpp:
+// What the effect options set is plan::EffectParams (plan/effect_params.hpp:
 // every effect value and its default, once); demo::Settings, what every
 // command's options set, is those plus the others. Unset parameters are
-// derived from the scene by render::resolve_effects() (docs/any-scene.md).
+// derived from the scene by plan::resolve_effects() (docs/any-scene.md).
 
 // How the window's panel (demo/window_panel.hpp) edits a row with a value:
 // a slider per component over [low, high] (the row's own bounds; a value
@@ -68,7 +68,7 @@ struct EffectOption {
     const char* value; // "M" for the help line; nullptr: a flag without a value
     const char* help;  // what follows the name in --help (may hold '\n' + indent for more lines)
     // Applies the value; a usage Failure naming the value when it is out of range.
-    std::optional<Failure> (*apply)(render::EffectParams& settings, const std::string& value);
+    std::optional<Failure> (*apply)(plan::EffectParams& settings, const std::string& value);
     unsigned commands = kRender | kWindow; // Command bits
     const char* example = nullptr;         // a value the row accepts (tests/cli/demo_options_test.cpp)
     PanelControl control = {};             // the window panel's widget
@@ -81,6 +81,6 @@ const EffectOption* find_effect_option(std::string_view name);
 
 // Checks that need several options together (--mirror-plane and
 // --mirror-rect are exclusive; --tiles within kMaxTiles in all).
-std::optional<Failure> check_effect_settings(const render::EffectParams& settings);
+std::optional<Failure> check_effect_settings(const plan::EffectParams& settings);
 
 } // namespace demo

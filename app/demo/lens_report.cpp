@@ -21,7 +21,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
 
     int levels = 0;
     auto timed_reference = s.timed_read(request.runs, ReportSession::keeping(levels, [&] {
-        return render::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
+        return reference::draw_lens_reference(ctx, *s.frame, draw, request.supersampling);
     }));
     if (!timed_reference) {
         return runtime(timed_reference.error());
@@ -34,14 +34,14 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     // How far the reference itself is from converged: the same at twice the supersampling.
     std::string self_check = "-";
     if (2 * request.supersampling <= 8) {
-        if (auto drawn = render::draw_lens_reference(ctx, *s.frame, draw, 2 * request.supersampling); !drawn) {
+        if (auto drawn = reference::draw_lens_reference(ctx, *s.frame, draw, 2 * request.supersampling); !drawn) {
             return runtime(drawn.error());
         }
         auto finer = s.read();
         if (!finer) {
             return runtime(finer.error());
         }
-        const render::MirrorError e = picture_error(reference, *finer, kWarpThresholdLsb);
+        const reference::MirrorError e = picture_error(reference, *finer, kWarpThresholdLsb);
         self_check = fixed(e.mean_abs, 2) + " LSB mean, " + std::to_string(e.max_abs) + " max, " +
                      fixed(100.0 * e.fraction_over, 2) + "% of the pixels over " + std::to_string(kWarpThresholdLsb) +
                      " LSB";

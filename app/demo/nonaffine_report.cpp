@@ -15,23 +15,23 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
     WarpReport report;
     const PngWriter write(r.out_dir, reporter, report.written_paths);
     const render::PassContext ctx = s.pass();
-    render::NonAffineOptions defaults;
+    plan::NonAffineOptions defaults;
     if (request.slit_depth_m > 0.0f) {
         defaults.slit_depth_m = request.slit_depth_m;
     }
     if (request.pivot_depth_m > 0.0f) {
         defaults.pivot_depth_m = request.pivot_depth_m;
     }
-    auto frustum = render::crossed_slits_frustum(s.cameras->main.pair, defaults, s.depth->gpu_range());
+    auto frustum = plan::crossed_slits_frustum(s.cameras->main.pair, defaults, s.depth->gpu_range());
     if (!frustum) {
         return runtime(frustum.error());
     }
-    const render::WorldGeometry geometry = render::WorldGeometry::from_scene(s.scene);
+    const plan::WorldGeometry geometry = plan::WorldGeometry::from_scene(s.scene);
 
     reporter.progress("ray casting the reference");
     const auto cast_start = std::chrono::steady_clock::now();
     const image::Image reference =
-        render::ray_cast_non_affine(geometry, *frustum, render::Lighting{}, render::kClearColor, r.width_px, r.height_px);
+        reference::ray_cast_non_affine(geometry, *frustum, render::Lighting{}, render::kClearColor, r.width_px, r.height_px);
     const double cast_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cast_start).count();
     if (auto status = write(reference, "nonaffine-reference.png"); !status) {
@@ -40,15 +40,15 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
 
     struct Row {
         std::string label, stem;
-        render::NonAffineOptions options;
+        plan::NonAffineOptions options;
     };
     std::vector<Row> rows;
-    render::NonAffineOptions naive = defaults;
+    plan::NonAffineOptions naive = defaults;
     naive.cull = false;
     naive.max_edge_m = 0.0f;
     rows.push_back({"naive eq. 36 (no cull, no subdivision)", "nonaffine-naive", naive});
     for (float edge : request.max_edges_m) {
-        render::NonAffineOptions o = defaults;
+        plan::NonAffineOptions o = defaults;
         o.max_edge_m = edge;
         const std::string edge_text = edge > 0.0f ? fixed(edge, 2) : std::string("none");
         rows.push_back({"cull, subdivision " + edge_text + (edge > 0.0f ? " m" : ""),
@@ -85,7 +85,7 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
         return runtime(status.error());
     }
     // Where the degenerate set cuts the scene: the original triangles culled, per node.
-    for (const render::WorldPrimitive& p : geometry.primitives) {
+    for (const plan::WorldPrimitive& p : geometry.primitives) {
         for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
             bool degenerate = false;
             for (std::size_t v = 0; v < 3; ++v) {

@@ -135,7 +135,7 @@ std::optional<Failure> whole_number(int& slot, const char* name, const std::stri
     return std::nullopt;
 }
 
-// "plain|mirror|..." (render::kAllEffects): the panel's choices for --effect.
+// "plain|mirror|..." (plan::kAllEffects): the panel's choices for --effect.
 const char* effect_choices() {
     static const std::string names = [] {
         std::string text = effect_names();
@@ -158,8 +158,8 @@ std::vector<Option> session_rows() {
     };
     const Apply effects = [](Settings& s, const std::string& v) -> std::optional<Failure> {
         if (v == "all") {
-            s.effects.assign(std::begin(render::kAllEffects), std::end(render::kAllEffects));
-        } else if (const auto effect = render::parse_effect(v)) {
+            s.effects.assign(std::begin(plan::kAllEffects), std::end(plan::kAllEffects));
+        } else if (const auto effect = plan::parse_effect(v)) {
             s.effects = {*effect};
         } else {
             return usage("unknown effect " + quoted(v) + " (expected " + effect_names() + " or all)");
@@ -167,7 +167,7 @@ std::vector<Option> session_rows() {
         return std::nullopt;
     };
     const Apply first_effect = [](Settings& s, const std::string& v) -> std::optional<Failure> {
-        const auto effect = render::parse_effect(v);
+        const auto effect = plan::parse_effect(v);
         if (!effect) {
             return usage("unknown effect " + quoted(v) + " (expected " + effect_names() + ")");
         }
@@ -335,10 +335,10 @@ std::vector<Option> report_rows() {
     return {
         {"--patches", "LIST", "patch grids G to compare, comma-separated, 1..64 (default 1,2,4,8,16)",
          [](Settings& s, const std::string& v) -> std::optional<Failure> {
-             auto counts = parse_list<int>(v, [](int g) { return g >= 1 && g <= render::kMaxCurvedPatches; });
+             auto counts = parse_list<int>(v, [](int g) { return g >= 1 && g <= plan::kMaxCurvedPatches; });
              if (!counts) {
                  return usage("--patches must be a comma-separated list of whole numbers in 1.." +
-                              std::to_string(render::kMaxCurvedPatches) + ", got " + quoted(v));
+                              std::to_string(plan::kMaxCurvedPatches) + ", got " + quoted(v));
              }
              s.patch_counts = *counts;
              return std::nullopt;
@@ -384,8 +384,8 @@ std::vector<Option> report_rows() {
 
 std::string effect_names() {
     std::string names;
-    for (std::size_t i = 0; i < std::size(render::kAllEffects); ++i) {
-        names += (i ? ", " : "") + std::string(render::to_string(render::kAllEffects[i]));
+    for (std::size_t i = 0; i < std::size(plan::kAllEffects); ++i) {
+        names += (i ? ", " : "") + std::string(plan::to_string(plan::kAllEffects[i]));
     }
     return names;
 }
@@ -394,11 +394,11 @@ Settings defaults(Command command) {
     Settings settings;
     settings.scene_path = default_scene();
     if (command == kWindow) {
-        settings.effects = {render::Effect::Plain};
+        settings.effects = {plan::Effect::Plain};
         settings.width_px = 960;
         settings.height_px = 540;
     } else {
-        settings.effects.assign(std::begin(render::kAllEffects), std::end(render::kAllEffects));
+        settings.effects.assign(std::begin(plan::kAllEffects), std::end(plan::kAllEffects));
     }
     return settings;
 }

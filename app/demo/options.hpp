@@ -5,7 +5,7 @@
 // so an option shared by several commands is declared once and means the
 // same in all of them, and a command refuses every option it does not
 // declare. Adding an option is adding a row (and its field in Settings or
-// render::EffectParams).
+// plan::EffectParams).
 #pragma once
 
 #include "demo/command.hpp"
@@ -33,13 +33,13 @@ namespace demo {
 // gives each command's own.
 // The session's values (every command: --scene, --camera, --size,
 // --verbose, the --max-* budget) are render::SessionSettings'.
-struct Settings : render::EffectParams, render::SessionSettings {
+struct Settings : plan::EffectParams, render::SessionSettings {
     // Offscreen commands (render and the reports).
     std::optional<gl::Backend> backend; // --backend; unset: EGL, falling back to OSMesa with a note
     render::DepthPath depth = render::DepthPath::ClipControlWhenAvailable; // --depth
     std::string out_dir = "out";        // --out
     // render and window.
-    std::vector<render::Effect> effects; // --effect (window: one, the first shown)
+    std::vector<plan::Effect> effects; // --effect (window: one, the first shown)
     int msaa_samples = gl::kAutomaticSamples; // --msaa N; default 4 or the context's maximum
     // render.
     std::optional<std::pair<int, int>> poster_tile_px; // --poster-tile WxH: a poster in tiles of this size
@@ -107,7 +107,7 @@ std::optional<Parsed> failure_or_help(const std::variant<HelpRequest, Settings, 
 // effect rows when `effect_rows`, the others otherwise.
 std::string options_help(Command command, bool effect_rows);
 
-// "plain, mirror, tiles, ..." (render::kAllEffects, in order).
+// "plain, mirror, tiles, ..." (plan::kAllEffects, in order).
 std::string effect_names();
 
 } // namespace demo

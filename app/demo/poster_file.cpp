@@ -30,7 +30,7 @@ std::string progress_text(int done, int total, double mpx_done, double elapsed_s
 
 } // namespace
 
-frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const render::Cameras& cameras,
+frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const plan::Cameras& cameras,
                                          const render::RenderOptions& options, const PosterJob& job) {
     const render::PosterLayout& layout = job.layout;
     auto stream = image::PngStream::open(job.path, layout.width_px, layout.height_px, job.zlib_level);
@@ -67,7 +67,7 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
         }
         last_status = Clock::now();
         const double mpx_done = std::min(frame_mpx, done * tile_mpx);
-        job.status(std::string(render::to_string(job.effect)) + ": " +
+        job.status(std::string(plan::to_string(job.effect)) + ": " +
                    progress_text(done, total, mpx_done, seconds_since(start)));
     };
     auto drawn = job.stereo ? render::render_stereo_poster(renderer, job.effect, cameras, options, *job.stereo,

@@ -43,11 +43,11 @@ struct PosterFile {
 };
 
 struct PosterJob {
-    render::Effect effect = render::Effect::Plain;
+    plan::Effect effect = plan::Effect::Plain;
     render::PosterLayout layout; // render::stereo_poster_layout() with `stereo`
     // Set: both eyes side by side (render::render_stereo_poster(), the
     // cameras made for one eye's image), as a direct stereo render.
-    std::optional<render::StereoRig> stereo;
+    std::optional<plan::StereoRig> stereo;
     std::string path;
     int zlib_level = 3; // image::kStreamZlibLevel
     // "mirror: tile 12/64, 3.4 Mpx/s, 41 s left": after the first second, at
@@ -56,7 +56,7 @@ struct PosterJob {
 };
 
 // The file appears only when complete (image::PngStream).
-frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const render::Cameras& cameras,
+frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const plan::Cameras& cameras,
                                          const render::RenderOptions& options, const PosterJob& job);
 
 } // namespace demo

@@ -50,9 +50,9 @@ frustum::Result<Timing> time_runs(int runs, const std::function<frustum::Status(
     return Timing{times[times.size() / 2], times.front()};
 }
 
-render::MirrorError picture_error(const image::Image& a, const image::Image& b, int threshold_lsb) {
-    return render::compare_on_mask(a, b, std::vector<bool>(static_cast<std::size_t>(a.width * a.height), true),
-                                   threshold_lsb);
+reference::MirrorError picture_error(const image::Image& a, const image::Image& b, int threshold_lsb) {
+    return reference::compare_on_mask(a, b, std::vector<bool>(static_cast<std::size_t>(a.width * a.height), true),
+                                      threshold_lsb);
 }
 
 image::Image diff_picture(const image::Image& a, const image::Image& b, const std::vector<bool>* mask) {
@@ -72,7 +72,7 @@ image::Image diff_picture(const image::Image& a, const image::Image& b, const st
     return out;
 }
 
-std::string error_cells(const render::MirrorError& e) {
+std::string error_cells(const reference::MirrorError& e) {
     return fixed(e.mean_abs, 2) + " | " + std::to_string(e.max_abs) + " | " + fixed(100.0 * e.fraction_over, 2) + "%";
 }
 

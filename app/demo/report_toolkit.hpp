@@ -45,14 +45,14 @@ frustum::Result<Timing> time_runs(int runs, const std::function<frustum::Status(
 
 // |a - b| of every RGB channel (all pixels, or those of `mask`), the share
 // of pixels over `threshold_lsb` in some channel.
-render::MirrorError picture_error(const image::Image& a, const image::Image& b, int threshold_lsb);
+reference::MirrorError picture_error(const image::Image& a, const image::Image& b, int threshold_lsb);
 
 // |a - b| x kDiffGain per RGB channel; with a mask, the pixels outside it
 // show `a` at a quarter of its brightness.
 image::Image diff_picture(const image::Image& a, const image::Image& b, const std::vector<bool>* mask = nullptr);
 
 // "mean | max | share%" cells of a picture_error().
-std::string error_cells(const render::MirrorError& e);
+std::string error_cells(const reference::MirrorError& e);
 
 // Writes DIR/name as PNG, records the path and reports it as progress.
 class PngWriter {

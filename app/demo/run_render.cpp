@@ -87,7 +87,7 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         return *failure;
     }
     g_activity = "rendering";
-    const render::Cameras* cameras = &*session.cameras;
+    const plan::Cameras* cameras = &*session.cameras;
     scene::Scene* scene = &session.scene;
     const gl::Functions* fn = session.fn.get();
     render::Renderer* renderer = &*session.renderer;
@@ -102,19 +102,19 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
         reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
     }
 
-    const std::optional<render::StereoRig> stereo = render::stereo_rig(request, cameras->main.pair, *scene);
+    const std::optional<plan::StereoRig> stereo = plan::stereo_rig(request, cameras->main.pair, *scene);
     if (stereo) { // the rig's bounds once, not once per effect
-        if (auto eyes = render::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
+        if (auto eyes = plan::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
             return runtime(eyes.error());
         }
     }
     if (stereo && request.verbose) {
-        reporter.note("stereo: ipd " + render::number_text(stereo->ipd_m) + " m, convergence " +
-                      render::number_text(stereo->convergence_m) + " m");
+        reporter.note("stereo: ipd " + plan::number_text(stereo->ipd_m) + " m, convergence " +
+                      plan::number_text(stereo->convergence_m) + " m");
     }
 
     render::RenderOptions options;
-    static_cast<render::EffectParams&>(options) = session.effects.params;
+    static_cast<plan::EffectParams&>(options) = session.effects.params;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
     options.depth = request.depth;
@@ -146,12 +146,12 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
                       size_text(layout->tile_width_px, layout->tile_height_px) + ", streamed to PNG" +
                       (stereo ? ", each eye " + size_text(layout->width_px / 2, layout->height_px) : std::string()));
     }
-    for (render::Effect effect : request.effects) {
-        const std::string name(render::to_string(effect));
-        if (request.verbose && effect == render::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
-            const auto end = render::recursion_end_note(cameras->main.pair, scene->world_bounds,
-                                                        render::instance_boxes(*scene), options.recursion_links,
-                                                        options.recursion_depth, request.width_px, request.height_px);
+    for (plan::Effect effect : request.effects) {
+        const std::string name(plan::to_string(effect));
+        if (request.verbose && effect == plan::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
+            const auto end = plan::recursion_end_note(cameras->main.pair, scene->world_bounds,
+                                                      plan::instance_boxes(*scene), options.recursion_links,
+                                                      options.recursion_depth, request.width_px, request.height_px);
             if (end && *end) {
                 reporter.note(**end);
             }

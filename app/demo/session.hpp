@@ -38,7 +38,7 @@ using ContextMaker = render::ContextMaker;
 // How a command opens its session.
 struct OpenOptions {
     bool cameras_at_size = true; // the cameras for a --size frame (the window makes its own per framebuffer)
-    // An explicit effect value the scene cannot take (render::ResolvedEffects::refused)
+    // An explicit effect value the scene cannot take (plan::ResolvedEffects::refused)
     // is a usage error before any GL (render, the reports); the window refuses only its effect.
     bool refuse_explicit = true;
     ContextMaker make_context;   // empty: make_context() (offscreen, the one fallback)

@@ -51,32 +51,32 @@ image::Image with_caption(const image::Image& picture, const std::vector<Caption
     return out;
 }
 
-std::vector<CaptionLine> effect_caption(render::Effect effect, const render::RenderOptions& o,
+std::vector<CaptionLine> effect_caption(plan::Effect effect, const render::RenderOptions& o,
                                         const std::string& camera_name, const frustum::MatrixPair<float>& camera,
                                         const scene::Scene& scene) {
-    using render::number_text;
-    const std::string name(render::to_string(effect));
+    using plan::number_text;
+    const std::string name(plan::to_string(effect));
     switch (effect) {
-    case render::Effect::Plain:
+    case plan::Effect::Plain:
         return {{name + ", from " + camera_name}};
-    case render::Effect::Mirror:
-        return {{name + ", " + std::string(render::to_string(o.mirror_method))}};
-    case render::Effect::Tiles:
+    case plan::Effect::Mirror:
+        return {{name + ", " + std::string(plan::to_string(o.mirror_method))}};
+    case plan::Effect::Tiles:
         return {{name + " " + std::to_string(o.tile_columns) + "x" + std::to_string(o.tile_rows) +
                  (o.tile_borders ? ", borders" : "")}};
-    case render::Effect::Frustum:
-        return {{name + " (" + std::string(render::to_string(o.mirror_method)) + ")"},
+    case plan::Effect::Frustum:
+        return {{name + " (" + std::string(plan::to_string(o.mirror_method)) + ")"},
                 {"yellow: camera", kYellow},
                 {"magenta: mirror camera", kMagenta}};
-    case render::Effect::Curved:
-        return {{name + " " + std::string(render::to_string(o.curved.shape)) + " " + std::to_string(o.curved.patches) +
+    case plan::Effect::Curved:
+        return {{name + " " + std::string(plan::to_string(o.curved.shape)) + " " + std::to_string(o.curved.patches) +
                  "x" + std::to_string(o.curved.patches)},
                 {"sagitta " + number_text(o.curved.sagitta_m) + " m"}};
-    case render::Effect::Lens: {
+    case plan::Effect::Lens: {
         std::vector<CaptionLine> lines{{name + " " + std::to_string(o.lens_grid) + "x" + std::to_string(o.lens_grid) +
                                         ", p " + number_text(o.lens_power)}};
         const auto frame = frustum::near_plane_frame(camera);
-        const auto lens = render::fit_lens(camera, scene.lens, scene.world_bounds, o.fit, o.lens_power);
+        const auto lens = plan::fit_lens(camera, scene.lens, scene.world_bounds, o.fit, o.lens_power);
         if (frame && lens) {
             // The centre in the frame's half sizes (scale 1): a float zero prints as 0.
             lines.push_back({"at " + number_text(lens->center_m.x / frame->half_width_m, 1.0) + "," +
@@ -85,18 +85,18 @@ std::vector<CaptionLine> effect_caption(render::Effect effect, const render::Ren
         }
         return lines;
     }
-    case render::Effect::NonAffine: {
+    case plan::Effect::NonAffine: {
         std::vector<CaptionLine> lines{{name}};
-        if (const auto fitted = render::fit_non_affine(camera, scene.world_bounds, o.nonaffine, o.fit)) {
+        if (const auto fitted = plan::fit_non_affine(camera, scene.world_bounds, o.nonaffine, o.fit)) {
             lines.push_back({"slit " + number_text(fitted->slit_depth_m) + " m, pivot " +
                              number_text(fitted->pivot_depth_m) + " m"});
         }
         return lines;
     }
-    case render::Effect::Portal:
+    case plan::Effect::Portal:
         return {{name + ": the scene from the exit, through the entry"}};
-    case render::Effect::Recursion:
-        return {{name + " " + std::string(render::to_string(o.recursion_links)) + ", depth " +
+    case plan::Effect::Recursion:
+        return {{name + " " + std::string(plan::to_string(o.recursion_links)) + ", depth " +
                  std::to_string(o.recursion_depth)}};
     }
     return {{name}};

@@ -26,7 +26,7 @@ image::Image with_caption(const image::Image& picture, const std::vector<Caption
 
 // What the panel of `effect` shows, e.g. {"nonaffine", "slit 1.2 m, pivot 3.6 m"}:
 // the parameters as the renderer derives them for `camera` and `scene`.
-std::vector<CaptionLine> effect_caption(render::Effect effect, const render::RenderOptions& options,
+std::vector<CaptionLine> effect_caption(plan::Effect effect, const render::RenderOptions& options,
                                         const std::string& camera_name, const frustum::MatrixPair<float>& camera,
                                         const scene::Scene& scene);
 

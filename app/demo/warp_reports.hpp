@@ -37,7 +37,7 @@ struct WarpReportRequest {
     RenderRequest render;             // scene, camera, size, backend, depth, lens power, out
     std::vector<int> grids;           // lens: grid sizes, each 1..kMaxLensGrid
     std::vector<float> max_edges_m;   // nonaffine: subdivision edge lengths, 0 = none
-    float slit_depth_m = 0.0f;        // nonaffine: 0 = render::NonAffineOptions' default
+    float slit_depth_m = 0.0f;        // nonaffine: 0 = plan::NonAffineOptions' default
     float pivot_depth_m = 0.0f;
     int supersampling = 4;            // lens reference: texture resolution / frame resolution
     int runs = 5;                     // timed repetitions (median reported)

@@ -37,16 +37,16 @@ std::string join(const float* values, int count, const PanelControl& control) {
     for (int i = 0; i < count; ++i) {
         text += (i ? std::string(1, control.separator) : std::string()) +
                 (control.whole ? std::to_string(static_cast<int>(std::lround(values[i])))
-                               : render::number_text(values[i]));
+                               : plan::number_text(values[i]));
     }
     return text;
 }
 
 // The effect a row belongs to: its help line starts with "<effect> effect"
 // (effect_options.cpp's convention); empty for the others.
-std::optional<render::Effect> row_effect(const Option& option) {
-    for (const render::Effect effect : render::kAllEffects) {
-        const std::string prefix = std::string(render::to_string(effect)) + " effect";
+std::optional<plan::Effect> row_effect(const Option& option) {
+    for (const plan::Effect effect : plan::kAllEffects) {
+        const std::string prefix = std::string(plan::to_string(effect)) + " effect";
         if (option.help.compare(0, prefix.size(), prefix) == 0) {
             return effect;
         }
@@ -124,7 +124,7 @@ void WindowPanel::follow(const window::ViewerState& state) {
     };
     followed_ = true;
     if (first || current_.effects.empty() || state.effect != current_.effects.front()) {
-        keep("--effect", std::string(render::to_string(state.effect)));
+        keep("--effect", std::string(plan::to_string(state.effect)));
         current_.effects = {state.effect};
     }
     if (first || state.tile_columns != current_.tile_columns || state.tile_rows != current_.tile_rows) {
@@ -133,11 +133,11 @@ void WindowPanel::follow(const window::ViewerState& state) {
         current_.tile_rows = state.tile_rows;
     }
     if (first || state.mirror_method != current_.mirror_method) {
-        keep("--mirror", std::string(render::to_string(state.mirror_method)));
+        keep("--mirror", std::string(plan::to_string(state.mirror_method)));
         current_.mirror_method = state.mirror_method;
     }
     if (first || state.lens_power != current_.lens_power) {
-        keep("--lens-power", render::number_text(state.lens_power));
+        keep("--lens-power", plan::number_text(state.lens_power));
         current_.lens_power = state.lens_power;
     }
     if (first || state.recursion_depth != current_.recursion_depth) {
@@ -237,7 +237,7 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     bool edited = false;
     // The rows of the effect shown first, then those of no one effect
     // (--effect, --msaa, fog, stereo), then the other effects' (folded).
-    const render::Effect shown = state.effect;
+    const plan::Effect shown = state.effect;
     const auto rows = [&](auto&& take) {
         for (const Option& option : options()) {
             const bool panel_row = (option.commands & kWindow) &&
@@ -260,13 +260,13 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
         ImGui::PopStyleColor();
     }
     ImGui::TextDisabled("hover a name for its --help line");
-    rows([](std::optional<render::Effect> effect) { return !effect; });
-    const std::string own = std::string(render::to_string(shown)) + " effect";
+    rows([](std::optional<plan::Effect> effect) { return !effect; });
+    const std::string own = std::string(plan::to_string(shown)) + " effect";
     ImGui::Separator();
     ImGui::TextUnformatted(own.c_str());
-    rows([&](std::optional<render::Effect> effect) { return effect == shown; });
+    rows([&](std::optional<plan::Effect> effect) { return effect == shown; });
     if (ImGui::CollapsingHeader("the other effects' options")) {
-        rows([&](std::optional<render::Effect> effect) { return effect && effect != shown; });
+        rows([&](std::optional<plan::Effect> effect) { return effect && effect != shown; });
     }
     edited = scene_file() || edited;
     if (edited) {
@@ -285,12 +285,12 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
             error_ = failure->message;
         }
     }
-    if (state.effect == render::Effect::Recursion && state.link_moves.size() >= 2 &&
+    if (state.effect == plan::Effect::Recursion && state.link_moves.size() >= 2 &&
         ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen)) {
         const float reach_m = 0.5f * view.scene_radius_m;
         const char* sides[] = {"left", "right"};
         for (int i = 0; i < 2; ++i) {
-            render::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
+            plan::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
             ImGui::PushID(i);
             ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
             ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);

@@ -109,8 +109,8 @@ std::variant<std::unique_ptr<WindowSession>, Failure> open_session(const WindowR
 // The settings the viewer state holds (the keys change them afterwards):
 // the effect values as resolved for the session's scene, and the effect,
 // MSAA and depth path of the settings.
-void hold(const render::EffectParams& params, const Settings& settings, window::ViewerState& state) {
-    static_cast<render::EffectParams&>(state) = params;
+void hold(const plan::EffectParams& params, const Settings& settings, window::ViewerState& state) {
+    static_cast<plan::EffectParams&>(state) = params;
     state.effect = settings.effects.front();
     state.msaa_samples = settings.msaa_samples;
     state.depth = settings.depth;
@@ -126,10 +126,10 @@ window::ViewerState initial_state(const WindowRequest& request, const WindowSess
 }
 
 // Settings from the panel, or for a scene file it loaded: resolved for the
-// session's scene as at start-up (render::resolve_effects()), the mirror
+// session's scene as at start-up (plan::resolve_effects()), the mirror
 // left where the scene has it (mirror_kept()), into the viewer state.
 void take_settings(const Settings& settings, WindowSession& s, window::ViewerState& state) {
-    s.effects = render::resolve_effects(settings, s.scene);
+    s.effects = plan::resolve_effects(settings, s.scene);
     hold(s.effects.params, settings, state);
 }
 
@@ -179,12 +179,12 @@ Settings mirror_kept(Settings settings) {
 
 // Another scene file, opened as at start-up: load_scene() (the --scene
 // and --camera of the settings) and a renderer uploading it, after the
-// mirror is placed as the settings ask (render::place_mirror(), which
+// mirror is placed as the settings ask (plan::place_mirror(), which
 // take_settings() then keeps). Nothing of the session changes here: on any
 // error the old scene stays on screen and the message goes to the panel.
 struct OpenedScene {
     LoadedScene loaded;
-    std::optional<std::string> placed; // where the mirror went (render::place_mirror())
+    std::optional<std::string> placed; // where the mirror went (plan::place_mirror())
     render::Renderer renderer;
 };
 
@@ -195,10 +195,10 @@ std::variant<OpenedScene, std::string> open_scene(const WindowSession& s, const 
     }
     LoadedScene& scene = std::get<LoadedScene>(loaded);
     // Placed where the new scene's camera sees it, as at start-up (docs/any-scene.md).
-    auto cameras = render::make_cameras(scene.scene, scene.camera_index, std::max(1, settings.width_px),
-                                        std::max(1, settings.height_px));
+    auto cameras = plan::make_cameras(scene.scene, scene.camera_index, std::max(1, settings.width_px),
+                                      std::max(1, settings.height_px));
     std::optional<std::string> placed =
-        render::place_mirror(scene.scene, settings.mirror_place, cameras ? &cameras->main.pair : nullptr);
+        plan::place_mirror(scene.scene, settings.mirror_place, cameras ? &cameras->main.pair : nullptr);
     auto renderer = render::Renderer::create(*s.context, *s.fn, scene.scene);
     if (!renderer) {
         return renderer.error();
@@ -261,7 +261,7 @@ void draw_help(const std::vector<std::string>& lines, bool beside_panel) {
 }
 
 // The mirror's screen rectangle (bottom-left pixels) as an outline, under the panel.
-void outline(const render::PixelRect& rect, int height_px) {
+void outline(const plan::PixelRect& rect, int height_px) {
     const float top = static_cast<float>(height_px - rect.y - rect.height);
     ImGui::GetBackgroundDrawList()->AddRect(
         ImVec2(static_cast<float>(rect.x), top),
@@ -315,10 +315,10 @@ private:
     WindowPanel panel_;
     window::FrameClock clock_;
     std::optional<double> frame_ms_;
-    render::Effect titled_effect_;
+    plan::Effect titled_effect_;
     gl::FramebufferSize size_;
     WindowRun run_;
-    render::Effect shown_effect_;       // the last effect drawn
+    plan::Effect shown_effect_;         // the last effect drawn
     std::optional<std::string> notice_; // why an effect was refused, in the overlay
     std::size_t keys_pressed_ = 0;      // of request.keys, one per pass of the loop
     bool screenshot_asked_ = false;     // the panel's button, saved at the next frame
@@ -382,7 +382,7 @@ std::optional<Failure> WindowLoop::paint(window::Frame& frame, bool& painted, do
         s_.fragments->mark(pass);
     };
     // An explicit value this scene cannot take (resolve_effects()): only its effect is refused.
-    frustum::Status status = frame.effect == render::Effect::Curved && s_.effects.refused
+    frustum::Status status = frame.effect == plan::Effect::Curved && s_.effects.refused
                                  ? frustum::Status(frustum::Error{*s_.effects.refused})
                                  : s_.painter->paint(*s_.renderer, frame, size_.width_px, size_.height_px);
     s_.fragments->end();
@@ -392,19 +392,19 @@ std::optional<Failure> WindowLoop::paint(window::Frame& frame, bool& painted, do
     if (!painted) {
         // Not for this scene or camera: keep the previous effect (plain
         // when that one fails now too, then no inset), say why, go on.
-        const std::string name(render::to_string(frame.effect));
-        if (frame.effect == render::Effect::Plain && !frame.inset) {
+        const std::string name(plan::to_string(frame.effect));
+        if (frame.effect == plan::Effect::Plain && !frame.inset) {
             return runtime(status.error());
         }
         if (frame.effect != shown_effect_) {
             state_.effect = shown_effect_;
-        } else if (frame.effect != render::Effect::Plain) {
-            state_.effect = render::Effect::Plain;
+        } else if (frame.effect != plan::Effect::Plain) {
+            state_.effect = plan::Effect::Plain;
         } else {
             state_.show_inset = false;
         }
-        notice_ = (frame.effect == render::Effect::Plain ? std::string("inset") : "effect " + name) +
-                  " not drawn: " + status.error() + "; showing " + std::string(render::to_string(state_.effect));
+        notice_ = (frame.effect == plan::Effect::Plain ? std::string("inset") : "effect " + name) +
+                  " not drawn: " + status.error() + "; showing " + std::string(plan::to_string(state_.effect));
         note_(*notice_);
         return std::nullopt;
     }
@@ -455,7 +455,7 @@ std::optional<Failure> WindowLoop::draw_overlay(const window::Frame& frame, cons
             return std::nullopt;
         };
         PanelOutcome outcome = panel_.draw(state_, view);
-        const bool mirror_shown = frame.effect == render::Effect::Mirror || frame.effect == render::Effect::Curved;
+        const bool mirror_shown = frame.effect == plan::Effect::Mirror || frame.effect == plan::Effect::Curved;
         if (numbers.mirror_rect && mirror_shown && !frame.stereo) {
             outline(*numbers.mirror_rect, size_.height_px);
         }
@@ -479,8 +479,8 @@ std::optional<Failure> WindowLoop::take_panel_outcome(PanelOutcome outcome) {
     }
     if (outcome.settings) {
         if (outcome.settings->camera != settings_.camera) {
-            // Another scene camera: found as at start-up (render::find_camera), the orbit dropped.
-            auto index = render::find_camera(s_.scene, outcome.settings->camera);
+            // Another scene camera: found as at start-up (plan::find_camera), the orbit dropped.
+            auto index = plan::find_camera(s_.scene, outcome.settings->camera);
             if (!index) {
                 return runtime(index.error());
             }

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string_view>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr float kFramingFovyRad = 0.785398163f; // 45 degrees
@@ -205,4 +205,4 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     return Cameras{{main_name, *main}, {"automatic overview", *overview}, far_note};
 }
 
-} // namespace render
+} // namespace plan

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace render {
+namespace plan {
 
 // projection (frustum::perspective / orthographic) composed with the view.
 // The view is the closed-form inverse of the rigid camera_to_world [R | t]:
@@ -75,4 +75,4 @@ std::optional<float> derived_far_m(const scene::Camera& camera, const scene::Bou
 // far_note says so.
 frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera, int width_px, int height_px);
 
-} // namespace render
+} // namespace plan

@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr const char* kCreate = "render::CurvedMirror::create(): ";
@@ -293,4 +293,4 @@ frustum::Result<std::optional<CurvedPlan>> plan_curved_mirror(const CurvedMirror
     return std::optional<CurvedPlan>(std::move(plan));
 }
 
-} // namespace render
+} // namespace plan

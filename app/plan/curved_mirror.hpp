@@ -28,7 +28,7 @@
 #include <string_view>
 #include <vector>
 
-namespace render {
+namespace plan {
 
 enum class CapShape { Sphere, Cylinder };
 
@@ -130,4 +130,4 @@ struct CurvedPlan {
 frustum::Result<std::optional<CurvedPlan>> plan_curved_mirror(const CurvedMirror& mirror, const glm::dvec3& eye,
                                                               const scene::Bounds& bounds, int grid);
 
-} // namespace render
+} // namespace plan

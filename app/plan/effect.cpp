@@ -2,7 +2,7 @@
 
 #include <frustum/detail/enum_names.hpp>
 
-namespace render {
+namespace plan {
 namespace {
 
 using frustum::detail::EnumName;
@@ -36,4 +36,4 @@ std::optional<MirrorMethod> parse_mirror_method(std::string_view text) {
     return frustum::detail::find_enum_value(kMirrorMethodNames, text);
 }
 
-} // namespace render
+} // namespace plan

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string_view>
 
-namespace render {
+namespace plan {
 
 enum class Effect {
     Plain,   // the scene from the camera
@@ -47,4 +47,4 @@ std::string_view to_string(MirrorMethod method);
 // Inverse of to_string(MirrorMethod); empty for any other text.
 std::optional<MirrorMethod> parse_mirror_method(std::string_view text);
 
-} // namespace render
+} // namespace plan

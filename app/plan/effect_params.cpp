@@ -3,7 +3,7 @@
 #include "plan/number_text.hpp"
 
 
-namespace render {
+namespace plan {
 
 ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene,
                                 const frustum::MatrixPair<float>* camera) {
@@ -33,4 +33,4 @@ std::optional<StereoRig> stereo_rig(const EffectParams& params, const frustum::M
     return rig;
 }
 
-} // namespace render
+} // namespace plan

@@ -20,7 +20,7 @@
 #include <optional>
 #include <string>
 
-namespace render {
+namespace plan {
 
 struct EffectParams {
     int tile_columns = 3, tile_rows = 2;                // --tiles: the tiles effect's crop grid (§5.1)
@@ -68,4 +68,4 @@ ResolvedEffects resolve_effects(const EffectParams& params, scene::Scene& scene,
 std::optional<StereoRig> stereo_rig(const EffectParams& params, const frustum::MatrixPair<float>& camera,
                                     const scene::Scene& scene);
 
-} // namespace render
+} // namespace plan

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-namespace render {
+namespace plan {
 
 struct FogOptions {
     std::optional<glm::vec3> color;     // sRGB-encoded; default: the frame's clear colour (the sky)
@@ -19,4 +19,4 @@ struct FogOptions {
     bool decode_reflection_unclipped = false;
 };
 
-} // namespace render
+} // namespace plan

@@ -4,7 +4,7 @@
 
 #include <array>
 
-namespace render {
+namespace plan {
 namespace {
 
 glm::vec4 canonical(const glm::vec4& homogeneous) {
@@ -69,4 +69,4 @@ std::vector<glm::vec3> frustum_lines(const frustum::MatrixPair<float>& pair, con
     return lines;
 }
 
-} // namespace render
+} // namespace plan

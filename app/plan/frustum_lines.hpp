@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace render {
+namespace plan {
 
 struct FrustumLineStyle {
     float marker_size_m = 0.1f;     // the crosses at O, D, O1, O2
@@ -26,4 +26,4 @@ struct FrustumLineStyle {
 // - a cross at the centre D, and at O1 and O2 when they are finite.
 std::vector<glm::vec3> frustum_lines(const frustum::MatrixPair<float>& pair, const FrustumLineStyle& style);
 
-} // namespace render
+} // namespace plan

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace render {
+namespace plan {
 namespace {
 
 void move_frame(frustum::Frame<float>& frame, const LinkMove& move, const glm::vec3& centre) {
@@ -29,4 +29,4 @@ void move_links(std::vector<ViewLink>& links, const std::vector<LinkMove>& moves
     }
 }
 
-} // namespace render
+} // namespace plan

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-namespace render {
+namespace plan {
 
 struct LinkMove {
     float push_m = 0.0f;   // along the mirror's normal: > 0 into the corridor (towards the other one)
@@ -20,4 +20,4 @@ struct LinkMove {
 // the first min(links, moves) links; the frames stay orthonormal.
 void move_links(std::vector<ViewLink>& links, const std::vector<LinkMove>& moves);
 
-} // namespace render
+} // namespace plan

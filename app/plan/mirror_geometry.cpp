@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr const char* kPlan = "render::plan_reflection(): ";
@@ -177,4 +177,4 @@ frustum::Result<std::optional<ReflectionView>> plan_reflection(const scene::Mirr
     return std::optional<ReflectionView>(ReflectionView{*pair, size.x, size.y, *rect});
 }
 
-} // namespace render
+} // namespace plan

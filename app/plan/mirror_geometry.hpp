@@ -11,7 +11,7 @@
 
 #include <optional>
 
-namespace render {
+namespace plan {
 
 // Whole pixels, offset from the bottom-left corner (glViewport's and
 // frustum::CropRect's convention, docs/errata.md erratum 1).
@@ -57,4 +57,4 @@ frustum::Result<std::optional<ReflectionView>> plan_reflection(const scene::Mirr
                                                                int width_px, int height_px, MirrorMethod method,
                                                                const scene::Bounds& bounds);
 
-} // namespace render
+} // namespace plan

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr float kRigidTolerance = 1e-4f;
@@ -49,4 +49,4 @@ scene::MirrorRect moved_mirror(const scene::MirrorRect& mirror, const glm::mat4&
     return moved;
 }
 
-} // namespace render
+} // namespace plan

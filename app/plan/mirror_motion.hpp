@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-namespace render {
+namespace plan {
 
 // Ok when `motion` is a rotation plus a translation: orthonormal upper 3x3
 // with determinant +1 (a reflection would turn the mirror's back to the
@@ -19,4 +19,4 @@ frustum::Status check_rigid_motion(const glm::mat4& motion, const char* where);
 // vectors; the surface instance index is kept.
 scene::MirrorRect moved_mirror(const scene::MirrorRect& mirror, const glm::mat4& motion);
 
-} // namespace render
+} // namespace plan

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr float kFloorGapFraction = 0.01f; // the floor lies 1% of the model's diagonal below it
@@ -159,4 +159,4 @@ int add_quad_instance(scene::Scene& scene, const glm::mat4& world, const glm::ve
     return static_cast<int>(scene.instances.size()) - 1;
 }
 
-} // namespace render
+} // namespace plan

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-namespace render {
+namespace plan {
 
 // --mirror-plane / --mirror-rect (at most one is set; the parser checks
 // that the plane's normal and the rectangle's sides are not degenerate).
@@ -51,4 +51,4 @@ float fraction_in_view(const frustum::MatrixPair<float>& camera, const scene::Mi
 // placed mirror and the portal / recursion links (view_links.hpp) are these.
 int add_quad_instance(scene::Scene& scene, const glm::mat4& world, const glm::vec4& color, const std::string& name);
 
-} // namespace render
+} // namespace plan

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 // The plane through the lines a + t up and b + t up, outward: `inside` on
@@ -57,4 +57,4 @@ frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const fr
         camera_planes.far->flipped(), inside, depth);
 }
 
-} // namespace render
+} // namespace plan

@@ -7,7 +7,7 @@
 #include <frustum/non_affine.hpp>
 #include <frustum/result.hpp>
 
-namespace render {
+namespace plan {
 
 struct NonAffineOptions {
     float slit_depth_m = 2.6f;  // left and right planes meet this far in front of the eye
@@ -24,4 +24,4 @@ frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const fr
                                                                         const NonAffineOptions& options,
                                                                         frustum::DepthRange depth);
 
-} // namespace render
+} // namespace plan

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-namespace render {
+namespace plan {
 
 inline std::string number_text(double value) {
     char text[32];
@@ -22,4 +22,4 @@ inline std::string number_text(double value, double scale) {
     return number_text(std::abs(value) < kZeroFraction * std::abs(scale) ? 0.0 : value);
 }
 
-} // namespace render
+} // namespace plan

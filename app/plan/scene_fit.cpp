@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr float kPivotNearFactor = 1.05f; // the derived pivot stays 5% beyond the near plane
@@ -154,4 +154,4 @@ float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape, const scene
     return reach_m > 0.0f ? std::min(by_size_m, kSagittaPerModelReach * reach_m) : by_size_m;
 }
 
-} // namespace render
+} // namespace plan

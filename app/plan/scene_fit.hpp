@@ -17,7 +17,7 @@
 
 #include <optional>
 
-namespace render {
+namespace plan {
 
 // Explicit effect parameters (RenderOptions::fit); unset = derived.
 struct EffectFit {
@@ -55,4 +55,4 @@ float max_sagitta_m(const scene::MirrorRect& mirror, CapShape shape);
 // bulging floor mirror under a small model does not swallow it.
 float fit_sagitta_m(const scene::MirrorRect& mirror, CapShape shape, const scene::Bounds& model_bounds);
 
-} // namespace render
+} // namespace plan

@@ -2,7 +2,7 @@
 
 #include <utility>
 
-namespace render {
+namespace plan {
 
 SplitGeometry SplitGeometry::build(const WorldGeometry& placed, float max_edge_m) {
     SplitGeometry out;
@@ -38,4 +38,4 @@ const SplitGeometry& SplitGeometryCache::get(const std::vector<scene::Instance>&
     return current_;
 }
 
-} // namespace render
+} // namespace plan

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace render {
+namespace plan {
 
 struct SplitGeometry {
     WorldGeometry split;                // placed and subdivided; its primitives' own vertices
@@ -48,4 +48,4 @@ private:
     SplitGeometry current_;
 };
 
-} // namespace render
+} // namespace plan

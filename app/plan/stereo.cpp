@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-namespace render {
+namespace plan {
 frustum::Result<CameraFrame> camera_frame(const frustum::MatrixPair<float>& camera) {
     const frustum::MatrixPair<double> pair = camera.cast<double>();
     const frustum::KeyPoints<double> k = frustum::key_points(pair);
@@ -122,4 +122,4 @@ float default_convergence_m(const frustum::MatrixPair<float>& camera, const std:
     return static_cast<float>(2.0 * f.near_m);
 }
 
-} // namespace render
+} // namespace plan

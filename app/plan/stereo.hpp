@@ -17,7 +17,7 @@
 
 #include <optional>
 
-namespace render {
+namespace plan {
 
 inline constexpr float kDefaultIpdM = 0.064f; // interpupillary distance, metres
 
@@ -52,7 +52,7 @@ struct StereoEyes {
 // with the camera's near and far depths and depth range. ipd_m = 0 gives
 // the camera's pair back (to float rounding). Errors: the camera_frame()
 // ones, ipd_m < 0 or not finite, convergence_m not between the near and
-// the far depth, e.g. "render::stereo_eyes(): convergence 0.05 m must be
+// the far depth, e.g. "plan::stereo_eyes(): convergence 0.05 m must be
 // beyond the near plane (0.1 m) and before the far plane (100 m)".
 frustum::Result<StereoEyes> stereo_eyes(const frustum::MatrixPair<float>& camera, const StereoRig& rig);
 
@@ -81,4 +81,4 @@ double predicted_disparity_px(const CameraFrame& frame, const StereoRig& rig, do
 float default_convergence_m(const frustum::MatrixPair<float>& camera, const std::optional<scene::MirrorRect>& mirror,
                             const scene::Bounds& bounds);
 
-} // namespace render
+} // namespace plan

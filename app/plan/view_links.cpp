@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 constexpr float kMinDepthPerNear = 2.0f; // the anchor lies at least twice the near distance away
@@ -271,4 +271,4 @@ scene::Scene link_scene(std::vector<ViewLink>& links) {
     return scene;
 }
 
-} // namespace render
+} // namespace plan

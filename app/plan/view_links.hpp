@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace render {
+namespace plan {
 
 // One surface a view passes through. A mirror: entry = the mirror's frame,
 // the view is frustum::mirror(camera, plane). A portal: the view through
@@ -108,4 +108,4 @@ glm::mat4 link_world(const ViewLink& link, bool exit);
 // its view looks like.
 glm::mat4 entry_frame_world(const ViewLink& link);
 
-} // namespace render
+} // namespace plan

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-namespace render {
+namespace plan {
 namespace {
 
 // The smallest whole-pixel rectangle holding `r` (floor / ceil, inside the image).
@@ -202,4 +202,4 @@ std::vector<int> children_of(const std::vector<ViewNode>& nodes, int index) {
     return out;
 }
 
-} // namespace render
+} // namespace plan

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace render {
+namespace plan {
 
 // How a view is bounded on screen.
 enum class ViewBounds {
@@ -93,4 +93,4 @@ frustum::Result<std::optional<std::string>> recursion_end_note(const frustum::Ma
 // The children of node `index` (their indices into `nodes`).
 std::vector<int> children_of(const std::vector<ViewNode>& nodes, int index);
 
-} // namespace render
+} // namespace plan

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace render {
+namespace plan {
 namespace {
 
 // The cofactor of the model's 3x3: normals through a non-uniform scale.
@@ -222,4 +222,4 @@ WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m) {
     return out;
 }
 
-} // namespace render
+} // namespace plan

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace render {
+namespace plan {
 
 struct WorldVertex {
     glm::vec3 position{0.0f}; // world, metres
@@ -75,4 +75,4 @@ std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m
 float edge_within_budget(const WorldGeometry& geometry, float max_edge_m,
                          std::size_t max_triangles = kMaxSplitTriangles);
 
-} // namespace render
+} // namespace plan

@@ -103,20 +103,20 @@ frustum::Result<std::vector<Sample>> showcase_samples(const scene::Scene& scene,
     if (!scene.mirror) {
         return frustum::Error{"precision::showcase_samples(): the scene has no mirror"};
     }
-    auto index = render::find_camera(scene, std::nullopt);
+    auto index = plan::find_camera(scene, std::nullopt);
     if (!index) {
         return frustum::Error{index.error()};
     }
-    auto cameras = render::make_cameras(scene, *index, kWidthPx, kHeightPx);
+    auto cameras = plan::make_cameras(scene, *index, kWidthPx, kHeightPx);
     if (!cameras) {
         return frustum::Error{cameras.error()};
     }
-    const auto plan = [&](render::MirrorMethod method) {
-        return render::plan_reflection(*scene.mirror, cameras->main.pair, kWidthPx, kHeightPx, method,
-                                       scene.world_bounds);
+    const auto reflection_for = [&](plan::MirrorMethod method) {
+        return plan::plan_reflection(*scene.mirror, cameras->main.pair, kWidthPx, kHeightPx, method,
+                                     scene.world_bounds);
     };
-    auto oblique = plan(render::MirrorMethod::Oblique);
-    auto plain = plan(render::MirrorMethod::ReflectOnly);
+    auto oblique = reflection_for(plan::MirrorMethod::Oblique);
+    auto plain = reflection_for(plan::MirrorMethod::ReflectOnly);
     if (!oblique || !plain) {
         return frustum::Error{!oblique ? oblique.error() : plain.error()};
     }

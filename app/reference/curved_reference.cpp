@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-namespace render {
+namespace reference {
 namespace {
 
 struct Triangle {
@@ -171,7 +171,7 @@ Hit trace(const std::vector<InstanceTriangles>& scene, const glm::dvec3& origin,
 double linear_to_srgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
 
 // scene.frag for the hit, as 8-bit sRGB (before any tint).
-glm::dvec3 shade(const Hit& hit, const glm::dvec3& direction, const Lighting& lighting) {
+glm::dvec3 shade(const Hit& hit, const glm::dvec3& direction, const render::Lighting& lighting) {
     const Triangle& t = *hit.triangle;
     const double b0 = 1.0 - hit.b1 - hit.b2;
     const glm::dvec4 base = b0 * t.ca + hit.b1 * t.cb + hit.b2 * t.cc;
@@ -231,7 +231,7 @@ glm::dvec3 reflect_about(const glm::dvec3& d, const glm::dvec3& n) { return d - 
 
 } // namespace
 
-frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const CurvedMirror& mirror,
+frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const plan::CurvedMirror& mirror,
                                                 const frustum::MatrixPair<float>& camera, int width_px, int height_px,
                                                 const TraceSettings& settings) {
     if (width_px < 1 || height_px < 1) {
@@ -271,7 +271,7 @@ frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const
     return out;
 }
 
-RayAngleError lookup_ray_error(const CurvedMirror& mirror, const CurvedPlan& plan,
+RayAngleError lookup_ray_error(const plan::CurvedMirror& mirror, const plan::CurvedPlan& plan,
                                const frustum::MatrixPair<float>& camera, int width_px, int height_px) {
     const PixelRays rays(camera, width_px, height_px);
     RayAngleError e;
@@ -284,7 +284,7 @@ RayAngleError lookup_ray_error(const CurvedMirror& mirror, const CurvedPlan& pla
                 continue;
             }
             const auto cell = [&](double t) { return std::clamp(static_cast<int>(t * plan.grid), 0, plan.grid - 1); };
-            const PatchFrustum& patch =
+            const plan::PatchFrustum& patch =
                 plan.patches[static_cast<std::size_t>(cell(cap->uv.y) * plan.grid + cell(cap->uv.x))];
             if (!patch.pair) {
                 continue;
@@ -308,4 +308,4 @@ MirrorError compare_on_mask(const image::Image& rendered, const image::Image& tr
     return MirrorError{d.pixel_count, d.mean_abs, d.max_abs, d.fraction_over()};
 }
 
-} // namespace render
+} // namespace reference

@@ -19,11 +19,11 @@
 
 #include <vector>
 
-namespace render {
+namespace reference {
 
 struct TraceSettings {
-    Lighting lighting;
-    glm::vec4 clear_color = kClearColor;
+    render::Lighting lighting;
+    glm::vec4 clear_color = render::kClearColor;
     glm::vec3 tint{1.0f}; // multiplies the 8-bit reflection, as the composite does
 };
 
@@ -37,7 +37,7 @@ struct TracedFrame {
 // place of the planar mirror's surface (scene.mirror->instance is skipped).
 // Materials are drawn opaque, as the scene pass draws them. Errors: a
 // material with a texture (the reference does not sample textures).
-frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const CurvedMirror& mirror,
+frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const plan::CurvedMirror& mirror,
                                                 const frustum::MatrixPair<float>& camera, int width_px, int height_px,
                                                 const TraceSettings& settings);
 
@@ -50,7 +50,7 @@ struct RayAngleError {
     int pixels = 0;
     double mean_deg = 0, max_deg = 0;
 };
-RayAngleError lookup_ray_error(const CurvedMirror& mirror, const CurvedPlan& plan,
+RayAngleError lookup_ray_error(const plan::CurvedMirror& mirror, const plan::CurvedPlan& plan,
                                const frustum::MatrixPair<float>& camera, int width_px, int height_px);
 
 // Rendered vs traced over the pixels of `mask` (image::compare_masked(),
@@ -65,4 +65,4 @@ struct MirrorError {
 MirrorError compare_on_mask(const image::Image& rendered, const image::Image& traced, const std::vector<bool>& mask,
                             int threshold);
 
-} // namespace render
+} // namespace reference

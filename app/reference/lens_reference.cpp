@@ -14,14 +14,14 @@
 #include <cmath>
 #include <string>
 
-namespace render {
+namespace reference {
 namespace {
 
 constexpr const char* kWhere = "render::draw_lens_reference()";
 
 // shaders/lens_remap.*: the per-pixel lens reference (eq. 34 in GLSL). Only
 // this reference uses it, so it is built here, not by every Renderer.
-class LensRemapProgram : public ShaderProgram {
+class LensRemapProgram : public render::ShaderProgram {
 public:
     static frustum::Result<LensRemapProgram> build(const gl::Functions& fn) {
         LensRemapProgram p;
@@ -73,8 +73,9 @@ float warped_reach(const frustum::NearPlaneFrame<float>& frame, const frustum::L
     return reach;
 }
 
-void draw_remap(const PassContext& ctx, const LensRemapProgram& p, const gl::Texture& source, const glm::vec4& rect_m,
-                const LensDraw& draw, const frustum::NearPlaneFrame<float>& near, int width_px, int height_px) {
+void draw_remap(const render::PassContext& ctx, const LensRemapProgram& p, const gl::Texture& source,
+                const glm::vec4& rect_m, const render::LensDraw& draw, const frustum::NearPlaneFrame<float>& near,
+                int width_px, int height_px) {
     const gl::Functions& fn = ctx.fn;
     p.use();
     fn.ActiveTexture(GL_TEXTURE0);
@@ -90,8 +91,8 @@ void draw_remap(const PassContext& ctx, const LensRemapProgram& p, const gl::Tex
 
 } // namespace
 
-frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                         const LensDraw& draw, int supersampling) {
+frustum::Result<int> draw_lens_reference(const render::PassContext& ctx, const gl::OffscreenTarget& frame,
+                                         const render::LensDraw& draw, int supersampling) {
     if (supersampling < 1 || supersampling > 8) {
         return frustum::Error{std::string(kWhere) + ": supersampling must be 1..8, got " +
                               std::to_string(supersampling)};
@@ -120,7 +121,7 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         return vertex_array.take_error_in(kWhere);
     }
     frame.bind();
-    begin_frame(ctx);
+    render::begin_frame(ctx);
     for (int level = levels - 1; level >= 0; --level) { // widest first; narrower ones overwrite
         const float scale = std::ldexp(1.0f, level);
         const frustum::CropRect<float> camera_in_level{(scale - 1.0f) * width_px / 2.0f,
@@ -138,10 +139,10 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         if (!source) {
             return source.take_error_in(kWhere);
         }
-        begin_frame(ctx);
-        SceneDraw scene{*pair};
+        render::begin_frame(ctx);
+        render::SceneDraw scene{*pair};
         scene.skip_instance = draw.skip_instance;
-        draw_scene(ctx, scene);
+        render::draw_scene(ctx, scene);
 
         frame.bind();
         ctx.fn.Disable(GL_DEPTH_TEST);
@@ -149,7 +150,7 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
         const glm::vec2 half_m = scale * glm::vec2(near->half_width_m, near->half_height_m);
         draw_remap(ctx, *program, source->color_texture(), glm::vec4(-half_m, half_m), draw, *near, width_px, height_px);
         ctx.fn.BindVertexArray(0);
-        set_frame_state(ctx);
+        render::set_frame_state(ctx);
     }
     if (auto status = gl::check_error(ctx.fn, kWhere); !status) {
         return status.take_error();
@@ -157,4 +158,4 @@ frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::Offsc
     return levels;
 }
 
-} // namespace render
+} // namespace reference

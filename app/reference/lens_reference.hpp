@@ -24,14 +24,14 @@
 #include <frustum/result.hpp>
 #include <gl/offscreen_target.hpp>
 
-namespace render {
+namespace reference {
 
 inline constexpr int kMaxLensReferenceLevels = 12;
 
 // Draws the whole frame into `frame` (left bound); draw.grid is not used.
 // Returns how many nested levels it needed. Errors: supersampling outside
 // 1..8, more than kMaxLensReferenceLevels levels, textures too large.
-frustum::Result<int> draw_lens_reference(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                         const LensDraw& draw, int supersampling);
+frustum::Result<int> draw_lens_reference(const render::PassContext& ctx, const gl::OffscreenTarget& frame,
+                                         const render::LensDraw& draw, int supersampling);
 
-} // namespace render
+} // namespace reference

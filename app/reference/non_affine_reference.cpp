@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <limits>
 
-namespace render {
+namespace reference {
 namespace {
 
 struct Hit {
     double s = std::numeric_limits<double>::infinity();
-    const WorldPrimitive* primitive = nullptr;
+    const plan::WorldPrimitive* primitive = nullptr;
     std::size_t first_index = 0; // of the triangle in primitive->indices
     double b1 = 0.0, b2 = 0.0;   // barycentric weights of its 2nd and 3rd vertex
     glm::dvec3 direction{0.0};   // along the pixel's line, towards larger s
@@ -27,7 +27,7 @@ double linear_to_srgb(double c) {
 
 class Caster {
 public:
-    Caster(const WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum)
+    Caster(const plan::WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum)
         : geometry_(geometry) {
         for (int i = 0; i < 6; ++i) {
             planes_[i] = glm::dvec4(frustum.plane(i).abcd);
@@ -53,7 +53,7 @@ public:
 
     Hit cast(const glm::dvec3& anchor, const glm::dvec3& direction) const {
         Hit best;
-        for (const WorldPrimitive& primitive : geometry_.primitives) {
+        for (const plan::WorldPrimitive& primitive : geometry_.primitives) {
             for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
                 test(primitive, t, anchor, direction, best);
             }
@@ -67,8 +67,8 @@ private:
     }
 
     // Moller-Trumbore against the whole line (t of either sign).
-    void test(const WorldPrimitive& primitive, std::size_t t, const glm::dvec3& anchor, const glm::dvec3& direction,
-              Hit& best) const {
+    void test(const plan::WorldPrimitive& primitive, std::size_t t, const glm::dvec3& anchor,
+              const glm::dvec3& direction, Hit& best) const {
         const glm::dvec3 a(primitive.vertices[primitive.indices[t]].position);
         const glm::dvec3 e1 = glm::dvec3(primitive.vertices[primitive.indices[t + 1]].position) - a;
         const glm::dvec3 e2 = glm::dvec3(primitive.vertices[primitive.indices[t + 2]].position) - a;
@@ -108,16 +108,16 @@ private:
         }
     }
 
-    const WorldGeometry& geometry_;
+    const plan::WorldGeometry& geometry_;
     glm::dvec4 planes_[6];
 };
 
 // scene.frag for the hit: base colour x vertex colour, ambient + diffuse.
-image::Rgba shade(const Hit& hit, const Lighting& lighting) {
-    const WorldPrimitive& p = *hit.primitive;
-    const WorldVertex& a = p.vertices[p.indices[hit.first_index]];
-    const WorldVertex& b = p.vertices[p.indices[hit.first_index + 1]];
-    const WorldVertex& c = p.vertices[p.indices[hit.first_index + 2]];
+image::Rgba shade(const Hit& hit, const render::Lighting& lighting) {
+    const plan::WorldPrimitive& p = *hit.primitive;
+    const plan::WorldVertex& a = p.vertices[p.indices[hit.first_index]];
+    const plan::WorldVertex& b = p.vertices[p.indices[hit.first_index + 1]];
+    const plan::WorldVertex& c = p.vertices[p.indices[hit.first_index + 2]];
     const double w0 = 1.0 - hit.b1 - hit.b2;
     const glm::dvec4 color = glm::dvec4(p.base_color_factor) *
                              (w0 * glm::dvec4(a.color) + hit.b1 * glm::dvec4(b.color) + hit.b2 * glm::dvec4(c.color));
@@ -143,8 +143,8 @@ image::Rgba shade(const Hit& hit, const Lighting& lighting) {
 
 } // namespace
 
-image::Image ray_cast_non_affine(const WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
-                                 const Lighting& lighting, const glm::vec4& clear_color, int width_px,
+image::Image ray_cast_non_affine(const plan::WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                 const render::Lighting& lighting, const glm::vec4& clear_color, int width_px,
                                  int height_px) {
     const image::Rgba clear{to_unorm8(clear_color.r), to_unorm8(clear_color.g), to_unorm8(clear_color.b), 255};
     image::Image out = image::make_image(width_px, height_px, clear);
@@ -165,4 +165,4 @@ image::Image ray_cast_non_affine(const WorldGeometry& geometry, const frustum::N
     return out;
 }
 
-} // namespace render
+} // namespace reference

@@ -23,11 +23,11 @@
 
 #include <glm/glm.hpp>
 
-namespace render {
+namespace reference {
 
 // width_px x height_px, rows top to bottom, sRGB-encoded like the GPU frame.
-image::Image ray_cast_non_affine(const WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
-                                 const Lighting& lighting, const glm::vec4& clear_color, int width_px,
+image::Image ray_cast_non_affine(const plan::WorldGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                 const render::Lighting& lighting, const glm::vec4& clear_color, int width_px,
                                  int height_px);
 
-} // namespace render
+} // namespace reference

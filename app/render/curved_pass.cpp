@@ -33,7 +33,7 @@ struct CapMesh {
     GLsizei indices_per_patch = 0;
 };
 
-frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CurvedMirror& mirror, int grid) {
+frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const plan::CurvedMirror& mirror, int grid) {
     const int per_patch = (kMinCapQuads + grid - 1) / grid;
     const int m = grid * per_patch;
     std::vector<float> positions;
@@ -92,7 +92,7 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CurvedMirror&
 // resolve blit keeps its rectangle; the copy moves it). So the atlas's
 // multisampled colour and depth (4x MSAA at 4096 x 4096: 512 MiB) are never
 // alive at once, only one tile's; the pixels are the same.
-frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const CurvedPlan& plan,
+frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const plan::CurvedPlan& plan,
                                                   const glm::ivec2& tile, int mirror_instance) {
     auto atlas = gl::OffscreenTarget::create(
         ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
@@ -102,7 +102,7 @@ frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const 
         return frustum::Error{kDraw + std::string("atlas: ") + (!atlas ? atlas.error() : scratch.error())};
     }
     const gl::Functions& fn = ctx.fn;
-    for (const PatchFrustum& patch : plan.patches) {
+    for (const plan::PatchFrustum& patch : plan.patches) {
         scratch->bind();
         set_frame_state(ctx);
         clear_frame(ctx);
@@ -124,7 +124,8 @@ frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const 
 
 // on_frame: the camera cropped to the target's window.
 void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::MatrixPair<float>& on_frame,
-              const CurvedPlan& plan, const CapMesh& mesh, const gl::OffscreenTarget& atlas, const glm::ivec2& tile) {
+              const plan::CurvedPlan& plan, const CapMesh& mesh, const gl::OffscreenTarget& atlas,
+              const glm::ivec2& tile) {
     const gl::Functions& fn = ctx.fn;
     const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
     p.use();
@@ -139,7 +140,7 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
     // The cap is single-sided: from behind it is culled like any surface.
     set_face_state(fn, false, draw.camera.flips_winding(), false);
     const glm::vec2 tile_uv = glm::vec2(tile) / atlas_size;
-    for (const PatchFrustum& patch : plan.patches) {
+    for (const plan::PatchFrustum& patch : plan.patches) {
         // Without a frustum any matrix will do: the lookup stays inside the
         // tile, which holds only the clear colour.
         const glm::mat4 matrix = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
@@ -156,7 +157,7 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
 
 } // namespace
 
-glm::ivec2 curved_tile_size(const CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
+glm::ivec2 curved_tile_size(const plan::CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
                             int width_px, int height_px) {
     const int largest = std::max(kMinTilePx, kMaxAtlasSidePx / grid);
     const float sign = frustum::clip_z_span<float>(camera.depth()) > 0.0f ? 1.0f : -1.0f;
@@ -205,7 +206,7 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
         draw_scene(ctx, SceneDraw{*on_frame});
         return {};
     };
-    auto mirror = CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
+    auto mirror = plan::CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
     if (!mirror) {
         return frustum::Error{kDraw + mirror.error()};
     }
@@ -213,7 +214,7 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     if (!eye) {
         return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
     }
-    auto plan = plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
+    auto plan = plan::plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
     if (!plan) {
         return frustum::Error{kDraw + plan.error()};
     }

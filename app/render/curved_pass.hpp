@@ -28,7 +28,7 @@ namespace render {
 struct CurvedDraw {
     frustum::MatrixPair<float> camera;  // ZeroToOne, perspective
     scene::MirrorRect mirror;           // the cap's footprint; mirror.instance is not drawn
-    CurvedMirrorOptions options;
+    plan::CurvedMirrorOptions options;
     glm::vec3 tint{0.92f, 0.95f, 1.0f}; // times the reflection
     scene::Bounds bounds;               // the patch frustums' far planes lie beyond it
 };
@@ -36,7 +36,7 @@ struct CurvedDraw {
 // Atlas tiles: width along a1, height along a2, each the longest on-screen
 // length of a patch edge in that direction (so a texel is never larger than
 // a screen pixel), at least 4 and at most 4096 / G texels.
-glm::ivec2 curved_tile_size(const CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
+glm::ivec2 curved_tile_size(const plan::CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
                             int width_px, int height_px);
 
 // Draws the whole frame into `frame` (left bound). When the eye is behind

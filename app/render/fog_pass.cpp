@@ -56,7 +56,7 @@ frustum::Result<DepthCopy> copy_depth(const gl::Functions& fn, const gl::Offscre
 
 } // namespace
 
-FogParams fit_fog(const FogOptions& options, const scene::Bounds& bounds, const glm::vec4& clear_color) {
+FogParams fit_fog(const plan::FogOptions& options, const scene::Bounds& bounds, const glm::vec4& clear_color) {
     const float diagonal_m = glm::length(bounds.max - bounds.min);
     FogParams fog;
     fog.color = options.color.value_or(glm::vec3(clear_color));

@@ -32,7 +32,7 @@ struct FogParams {
 };
 
 // The fog of `options` for a scene with `bounds`, drawn over `clear_color`.
-FogParams fit_fog(const FogOptions& options, const scene::Bounds& bounds, const glm::vec4& clear_color);
+FogParams fit_fog(const plan::FogOptions& options, const scene::Bounds& bounds, const glm::vec4& clear_color);
 
 // shaders/fog.frag (+ frustum.glsl) over lens_remap.vert's full-screen
 // triangle: the depth texture decoded with a pair's inverse, fog blended.

@@ -13,14 +13,14 @@
 namespace render {
 
 frustum::Status draw_frustum_view(const PassContext& ctx, const frustum::MatrixPair<float>& viewer,
-                                  const std::vector<FrustumOverlay>& overlays, const FrustumLineStyle& style) {
+                                  const std::vector<FrustumOverlay>& overlays, const plan::FrustumLineStyle& style) {
     begin_frame(ctx);
     draw_scene(ctx, SceneDraw{viewer});
 
     std::vector<glm::vec3> vertices;
     std::vector<std::pair<GLint, GLsizei>> ranges; // first vertex, count per overlay
     for (const FrustumOverlay& overlay : overlays) {
-        const std::vector<glm::vec3> lines = frustum_lines(overlay.pair, style);
+        const std::vector<glm::vec3> lines = plan::frustum_lines(overlay.pair, style);
         ranges.emplace_back(static_cast<GLint>(vertices.size()), static_cast<GLsizei>(lines.size()));
         vertices.insert(vertices.end(), lines.begin(), lines.end());
     }

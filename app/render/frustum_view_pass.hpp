@@ -22,6 +22,6 @@ struct FrustumOverlay {
 
 // Draws into the bound framebuffer and viewport.
 frustum::Status draw_frustum_view(const PassContext& ctx, const frustum::MatrixPair<float>& viewer,
-                                  const std::vector<FrustumOverlay>& overlays, const FrustumLineStyle& style);
+                                  const std::vector<FrustumOverlay>& overlays, const plan::FrustumLineStyle& style);
 
 } // namespace render

@@ -15,7 +15,7 @@ namespace {
 // The reflection: the scene without the mirror surface (it lies on the
 // oblique near plane / the rectangle's near plane), winding flipped for a
 // reflected pair.
-frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, const ReflectionView& view,
+frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, const plan::ReflectionView& view,
                                                        int mirror_instance) {
     auto target = gl::OffscreenTarget::create(
         ctx.fn, {view.texture_width_px, view.texture_height_px, gl::ColorStorage::Texture, gl::DepthFormat::Depth24,
@@ -35,8 +35,9 @@ frustum::Result<gl::OffscreenTarget> render_reflection(const PassContext& ctx, c
 // so the window's share is the rectangle intersected with the window
 // (empty optional: all of it, the Rectangle method's texture spans the
 // mirror, not the screen, or the window is the whole frame).
-std::optional<PixelRect> texture_part(const ReflectionView& view, MirrorMethod method, const FrameWindow& window) {
-    if (method == MirrorMethod::Rectangle) {
+std::optional<plan::PixelRect> texture_part(const plan::ReflectionView& view, plan::MirrorMethod method,
+                                            const FrameWindow& window) {
+    if (method == plan::MirrorMethod::Rectangle) {
         return std::nullopt;
     }
     const auto part = intersect(view.screen_rect, window.rect);
@@ -49,12 +50,13 @@ std::optional<PixelRect> texture_part(const ReflectionView& view, MirrorMethod m
 // The reflection's fog: its depth decoded with the pair that wrote it, or
 // (the counter-example) with the reflected pair before the oblique near
 // plane, cropped alike.
-frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget& target, const ReflectionView& view,
-                               const FrameWindow& window, const MirrorDraw& draw, const FogDraw& fog) {
+frustum::Status fog_reflection(const PassContext& ctx, const gl::OffscreenTarget& target,
+                               const plan::ReflectionView& view, const FrameWindow& window, const MirrorDraw& draw,
+                               const FogDraw& fog) {
     frustum::MatrixPair<float> decode = view.pair;
     if (fog.decode_reflection_unclipped) {
-        auto unclipped = plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px,
-                                         MirrorMethod::ReflectOnly, draw.bounds);
+        auto unclipped = plan::plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px,
+                                               plan::MirrorMethod::ReflectOnly, draw.bounds);
         if (!unclipped) {
             return frustum::Error{unclipped.error()};
         }
@@ -102,8 +104,8 @@ void draw_reflection_surface(const PassContext& ctx, const frustum::MatrixPair<f
 frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame, const MirrorDraw& draw) {
     // Planned for the whole frame; the target draws its window's crop.
     const FrameWindow window = window_of(ctx, frame.width(), frame.height());
-    auto plan = plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px, draw.method,
-                                draw.bounds);
+    auto plan = plan::plan_reflection(draw.mirror, draw.camera, window.full_width_px, window.full_height_px,
+                                      draw.method, draw.bounds);
     if (!plan) {
         return plan.take_error();
     }
@@ -114,7 +116,7 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
     const int surface = draw.mirror.instance;
     // The screen-aligned texture covers the rectangle: a window that misses
     // it shows no mirror pixel (the rectangle bounds the surface's).
-    const bool misses = plan->has_value() && draw.method != MirrorMethod::Rectangle &&
+    const bool misses = plan->has_value() && draw.method != plan::MirrorMethod::Rectangle &&
                         !intersect((*plan)->screen_rect, window.rect);
     if (!plan->has_value() || surface < 0 || misses) {
         frame.bind();
@@ -124,18 +126,18 @@ frustum::Status draw_mirror_frame(const PassContext& ctx, const gl::OffscreenTar
         draw_scene(ctx, plain);
         return draw.fog ? draw.fog->pass->apply(ctx, frame, *on_frame, draw.fog->params) : frustum::Status{};
     }
-    ReflectionView view = **plan;
+    plan::ReflectionView view = **plan;
     if (const auto part = texture_part(view, draw.method, window)) {
         auto cropped = crop_part(view.pair, view.screen_rect, *part);
         if (!cropped) {
             return cropped.take_error_in("render::draw_mirror_frame()");
         }
-        view = ReflectionView{*cropped, part->width, part->height, *part};
+        view = plan::ReflectionView{*cropped, part->width, part->height, *part};
     }
     // The rectangle method's texture spans the mirror, not the window: the
     // same for every tile of a poster, drawn once and kept resolved
     // (frame_cache.hpp). The screen-aligned ones are each tile's own crop.
-    const bool shared = draw.method == MirrorMethod::Rectangle && ctx.frame_cache;
+    const bool shared = draw.method == plan::MirrorMethod::Rectangle && ctx.frame_cache;
     std::optional<gl::OffscreenTarget> own;
     std::optional<gl::OffscreenTarget>& slot = shared ? ctx.frame_cache->mirror_reflection : own;
     if (!slot) {

@@ -22,7 +22,7 @@ namespace render {
 struct MirrorDraw {
     frustum::MatrixPair<float> camera; // ZeroToOne
     scene::MirrorRect mirror;          // mirror.instance is the surface drawn with the reflection
-    MirrorMethod method = MirrorMethod::Oblique;
+    plan::MirrorMethod method = plan::MirrorMethod::Oblique;
     glm::vec3 tint{0.92f, 0.95f, 1.0f}; // times the reflection; (1, 1, 1) = a perfect mirror
     scene::Bounds bounds;              // for the Rectangle method's far plane
     // Distance fog over the frame and, decoded with the reflection's own

@@ -24,12 +24,12 @@ constexpr const char* kDraw = "render::draw_non_affine_frame()";
 // A triangle range of the index buffer and how to draw it.
 struct Range {
     GLsizei first = 0, count = 0;
-    const WorldPrimitive* primitive = nullptr;
+    const plan::WorldPrimitive* primitive = nullptr;
     AlphaGroup group = AlphaGroup::Opaque;
     float depth_m = 0.0f; // BLEND: distance of its centre behind the near plane
 };
 
-void set_material(const PassContext& ctx, const NonAffineProgram& p, const WorldPrimitive& primitive) {
+void set_material(const PassContext& ctx, const NonAffineProgram& p, const plan::WorldPrimitive& primitive) {
     const gl::Functions& fn = ctx.fn;
     const GpuMaterial& material = ctx.scene.material(primitive.material);
     p.set_material(material, ctx.scene.textures());
@@ -56,15 +56,15 @@ void set_frame_uniforms(const PassContext& ctx, const NonAffineProgram& p,
 }
 
 void set_vertex_layout(const gl::Functions& fn) {
-    const auto stride = static_cast<GLsizei>(sizeof(WorldVertex));
+    const auto stride = static_cast<GLsizei>(sizeof(plan::WorldVertex));
     const auto attribute = [&](GLuint location, GLint size, std::size_t offset) {
         fn.EnableVertexAttribArray(location);
         fn.VertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
     };
-    attribute(kPositionLocation, 3, offsetof(WorldVertex, position));
-    attribute(kNormalLocation, 3, offsetof(WorldVertex, normal));
-    attribute(kColorLocation, 4, offsetof(WorldVertex, color));
-    attribute(kTexcoordLocation, 2, offsetof(WorldVertex, texcoord));
+    attribute(kPositionLocation, 3, offsetof(plan::WorldVertex, position));
+    attribute(kNormalLocation, 3, offsetof(plan::WorldVertex, normal));
+    attribute(kColorLocation, 4, offsetof(plan::WorldVertex, color));
+    attribute(kTexcoordLocation, 2, offsetof(plan::WorldVertex, texcoord));
 }
 
 } // namespace
@@ -75,8 +75,8 @@ bool is_degenerate(const frustum::NonAffineFrustum<float>& frustum, const glm::v
     return !(d.x < -guard_m && d.y < -guard_m && d.z < -guard_m);
 }
 
-NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
-                                const NonAffineOptions& options) {
+NonAffineBatch batch_non_affine(const plan::SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                const plan::NonAffineOptions& options) {
     NonAffineBatch batch;
     // One flag per gathered vertex (bytes: no bit packing in the hot loop).
     std::vector<unsigned char> degenerate(geometry.vertices.size(), 0);
@@ -86,7 +86,7 @@ NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::No
         }
     }
     for (std::size_t i = 0; i < geometry.split.primitives.size(); ++i) {
-        const WorldPrimitive& p = geometry.split.primitives[i];
+        const plan::WorldPrimitive& p = geometry.split.primitives[i];
         const std::uint32_t base = geometry.bases[i];
         const unsigned char* bad = degenerate.data() + base;
         NonAffineBatch::Range range{static_cast<std::uint32_t>(batch.indices.size()), 0, i};
@@ -108,25 +108,26 @@ NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::No
 }
 
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                                      const WorldGeometry& geometry,
+                                                      const plan::WorldGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,
-                                                      const NonAffineOptions& options) {
-    return draw_non_affine_frame(ctx, frame, SplitGeometry::build(geometry, options.max_edge_m), frustum, options);
+                                                      const plan::NonAffineOptions& options) {
+    return draw_non_affine_frame(ctx, frame, plan::SplitGeometry::build(geometry, options.max_edge_m), frustum,
+                                 options);
 }
 
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                                      const SplitGeometry& geometry,
+                                                      const plan::SplitGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,
-                                                      const NonAffineOptions& options) {
+                                                      const plan::NonAffineOptions& options) {
     const NonAffineBatch batch = batch_non_affine(geometry, frustum, options);
     std::vector<Range> ranges;
     for (const NonAffineBatch::Range& kept : batch.ranges) {
-        const WorldPrimitive& p = geometry.split.primitives[kept.primitive];
+        const plan::WorldPrimitive& p = geometry.split.primitives[kept.primitive];
         Range range{static_cast<GLsizei>(kept.first), static_cast<GLsizei>(kept.count), &p};
         range.group = alpha_group(ctx.scene.material(p.material).alpha_mode);
         if (range.group == AlphaGroup::Blend && !p.vertices.empty()) {
             glm::vec3 low = p.vertices.front().position, high = low;
-            for (const WorldVertex& v : p.vertices) {
+            for (const plan::WorldVertex& v : p.vertices) {
                 low = glm::min(low, v.position);
                 high = glm::max(high, v.position);
             }
@@ -135,7 +136,7 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
         }
         ranges.push_back(range);
     }
-    const std::vector<WorldVertex>& vertices = geometry.vertices;
+    const std::vector<plan::WorldVertex>& vertices = geometry.vertices;
     const std::vector<std::uint32_t>& indices = batch.indices;
     const NonAffineStats stats = batch.stats;
 
@@ -151,8 +152,8 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
     begin_frame(ctx);
     fn.BindVertexArray(vertex_array->id());
     fn.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer->id());
-    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(WorldVertex)), vertices.data(),
-                  GL_STREAM_DRAW);
+    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(plan::WorldVertex)),
+                  vertices.data(), GL_STREAM_DRAW);
     fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer->id());
     static_assert(sizeof(GLuint) == sizeof(std::uint32_t));
     fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),

@@ -52,23 +52,23 @@ struct NonAffineBatch {
     std::vector<Range> ranges;
     NonAffineStats stats;
 };
-NonAffineBatch batch_non_affine(const SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
-                                const NonAffineOptions& options);
+NonAffineBatch batch_non_affine(const plan::SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
+                                const plan::NonAffineOptions& options);
 
 // Draws the whole frame into `frame` (left bound). The frustum's planes are
 // used; its depth range is not: s = 0..1 goes to the GPU's depth range
 // (ctx.depth). `geometry` is the scene's triangles split to
 // options.max_edge_m (SplitGeometry::build(), SplitGeometryCache).
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                                      const SplitGeometry& geometry,
+                                                      const plan::SplitGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,
-                                                      const NonAffineOptions& options);
+                                                      const plan::NonAffineOptions& options);
 
 // As above from the scene's original (placed, unsplit) triangles: splits
 // them first, each call.
 frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                                      const WorldGeometry& geometry,
+                                                      const plan::WorldGeometry& geometry,
                                                       const frustum::NonAffineFrustum<float>& frustum,
-                                                      const NonAffineOptions& options);
+                                                      const plan::NonAffineOptions& options);
 
 } // namespace render

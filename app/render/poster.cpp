@@ -113,7 +113,7 @@ namespace {
 // rows (x_px, width_px; the whole height). A mono poster has one, a stereo
 // poster one per eye.
 struct PosterView {
-    const Cameras* cameras = nullptr;
+    const plan::Cameras* cameras = nullptr;
     int x_px = 0;
     int width_px = 0;
 };
@@ -132,7 +132,7 @@ frustum::Status check_tile(const PosterLayout& layout, int frame_width_px, const
 }
 
 // The rows of tiles of every view side by side, top to bottom.
-frustum::Status draw_poster(const Renderer& renderer, Effect effect, const std::vector<PosterView>& views,
+frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const std::vector<PosterView>& views,
                             const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
                             const PosterProgress& progress) {
     const gl::Functions& fn = renderer.functions();
@@ -173,8 +173,9 @@ frustum::Status draw_poster(const Renderer& renderer, Effect effect, const std::
                     target = std::move(*made);
                 }
                 // GL counts rows from the bottom.
-                const FrameWindow window{view.width_px, layout.height_px,
-                                         PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
+                const FrameWindow window{
+                    view.width_px, layout.height_px,
+                    plan::PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
                 if (auto status = renderer.render_into(effect, *view.cameras, options, *target, window, &caches[v]);
                     !status) {
                     return status;
@@ -204,7 +205,7 @@ std::string odd_width(const char* where, int width_px) {
 
 } // namespace
 
-frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+frustum::Status render_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
                               const PosterProgress& progress) {
     if (auto status = check_tile(layout, layout.width_px, kRender); !status) {
@@ -227,9 +228,10 @@ frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int 
     return layout;
 }
 
-frustum::Status render_stereo_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
-                                     const RenderOptions& options, const StereoRig& rig, const PosterLayout& layout,
-                                     const PosterRowSink& sink, const PosterProgress& progress) {
+frustum::Status render_stereo_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
+                                     const RenderOptions& options, const plan::StereoRig& rig,
+                                     const PosterLayout& layout, const PosterRowSink& sink,
+                                     const PosterProgress& progress) {
     constexpr const char* kStereo = "render::render_stereo_poster()";
     if (layout.width_px % 2 != 0) {
         return frustum::Error{odd_width(kStereo, layout.width_px)};
@@ -238,7 +240,7 @@ frustum::Status render_stereo_poster(const Renderer& renderer, Effect effect, co
     if (auto status = check_tile(layout, eye_width_px, kStereo); !status) {
         return status;
     }
-    auto eyes = stereo_cameras(cameras, rig);
+    auto eyes = plan::stereo_cameras(cameras, rig);
     if (!eyes) {
         return frustum::Error{eyes.error()};
     }

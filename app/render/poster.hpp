@@ -63,7 +63,7 @@ using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
 // as a poster of its own. Errors: a layout outside 1..kMaxPosterSidePx or a
 // tile larger than the frame, a target the context cannot make, a pass's
 // error, the sink's error.
-frustum::Status render_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
+frustum::Status render_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout,
                               const PosterRowSink& sink, const PosterProgress& progress = {});
 
@@ -85,8 +85,9 @@ frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int 
 // handed to `sink` as one full-width row; progress counts both eyes'
 // tiles. Errors: render_poster()'s, an odd width, a tile wider than one
 // eye, the stereo_cameras() ones.
-frustum::Status render_stereo_poster(const Renderer& renderer, Effect effect, const Cameras& cameras,
-                                     const RenderOptions& options, const StereoRig& rig, const PosterLayout& layout,
-                                     const PosterRowSink& sink, const PosterProgress& progress = {});
+frustum::Status render_stereo_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
+                                     const RenderOptions& options, const plan::StereoRig& rig,
+                                     const PosterLayout& layout, const PosterRowSink& sink,
+                                     const PosterProgress& progress = {});
 
 } // namespace render

@@ -18,20 +18,20 @@ namespace {
 // window is not drawn (its surface shows no pixel there either: the
 // rectangle bounds it).
 struct ViewPart {
-    std::optional<PixelRect> part;
+    std::optional<plan::PixelRect> part;
     std::optional<frustum::MatrixPair<float>> render;
     glm::mat4 surface_matrix{1.0f};
 };
 
-PixelRect whole_pixels(const frustum::CropRect<float>& r) {
+plan::PixelRect whole_pixels(const frustum::CropRect<float>& r) {
     return {static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.width), static_cast<int>(r.height)};
 }
 
-frustum::Result<std::vector<ViewPart>> view_parts(const std::vector<ViewNode>& nodes, const FrameWindow& window) {
+frustum::Result<std::vector<ViewPart>> view_parts(const std::vector<plan::ViewNode>& nodes, const FrameWindow& window) {
     std::vector<ViewPart> parts(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const ViewNode& node = nodes[i];
-        const PixelRect rect = whole_pixels(node.rect);
+        const plan::ViewNode& node = nodes[i];
+        const plan::PixelRect rect = whole_pixels(node.rect);
         parts[i].part = intersect(rect, window.rect);
         if (!parts[i].part) {
             continue;
@@ -70,7 +70,7 @@ struct Frame {
 // Node `index` into whatever is bound: the scene, the links' quads it does
 // not look through, and its children's surfaces with their textures.
 void draw_view(Frame& f, int index) {
-    const ViewNode& node = f.draw.nodes[static_cast<std::size_t>(index)];
+    const plan::ViewNode& node = f.draw.nodes[static_cast<std::size_t>(index)];
     const frustum::MatrixPair<float>& render = *f.parts[static_cast<std::size_t>(index)].render;
     DrawCounts* counts = f.stats ? &f.stats->per_level[static_cast<std::size_t>(node.level)] : nullptr;
     SceneDraw scene{render};
@@ -82,24 +82,24 @@ void draw_view(Frame& f, int index) {
     SceneDraw quads{render};
     quads.clip_plane = node.clip_plane;
     if (node.link >= 0) { // the surface this view's near plane lies on
-        const ViewLink& through = f.draw.links[static_cast<std::size_t>(node.link)];
-        quads.skip_more.push_back(through.kind == ViewLink::Kind::Mirror ? through.surface_instance
+        const plan::ViewLink& through = f.draw.links[static_cast<std::size_t>(node.link)];
+        quads.skip_more.push_back(through.kind == plan::ViewLink::Kind::Mirror ? through.surface_instance
                                                                           : through.exit_instance);
     }
-    const std::vector<int> children = children_of(f.draw.nodes, index);
+    const std::vector<int> children = plan::children_of(f.draw.nodes, index);
     for (int c : children) {
         quads.skip_more.push_back(f.draw.links[static_cast<std::size_t>(f.draw.nodes[static_cast<std::size_t>(c)].link)]
                                       .surface_instance);
     }
     draw_scene(f.link_ctx, quads);
     for (int c : children) {
-        const ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
+        const plan::ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
         const ViewPart& child_part = f.parts[static_cast<std::size_t>(c)];
         if (!child_part.part) {
             continue; // outside the window
         }
-        const ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
-        const glm::vec3 tint = link.kind == ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
+        const plan::ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
+        const glm::vec3 tint = link.kind == plan::ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
         std::optional<gl::OffscreenTarget>& texture = f.textures[static_cast<std::size_t>(c)];
         draw_reflection_surface(f.link_ctx, render, link.surface_instance, texture->color_texture(),
                                 child_part.surface_matrix, tint);
@@ -129,7 +129,7 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     TargetPool* pool = f.lean ? nullptr : draw.targets;
     if (stats) {
         int levels = 0;
-        for (const ViewNode& node : draw.nodes) {
+        for (const plan::ViewNode& node : draw.nodes) {
             levels = std::max(levels, node.level + 1);
         }
         stats->per_level.assign(static_cast<std::size_t>(levels), DrawCounts{});
@@ -139,7 +139,7 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     std::vector<std::string> level_names;
     if (ctx.pass_end) {
         std::vector<int> views;
-        for (const ViewNode& node : draw.nodes) {
+        for (const plan::ViewNode& node : draw.nodes) {
             views.resize(std::max(views.size(), static_cast<std::size_t>(node.level) + 1), 0);
             ++views[static_cast<std::size_t>(node.level)];
         }
@@ -150,7 +150,7 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     }
     // Children come after their parents: the deepest views are drawn first.
     for (std::size_t i = draw.nodes.size(); i-- > 1;) {
-        const ViewNode& node = draw.nodes[i];
+        const plan::ViewNode& node = draw.nodes[i];
         if (!f.parts[i].part) {
             continue; // outside the window: nothing of it is seen there
         }

@@ -25,10 +25,10 @@
 namespace render {
 
 struct RecursionDraw {
-    const std::vector<ViewNode>& nodes; // plan_view_tree() for the frame's size
-    const std::vector<ViewLink>& links; // their surfaces are instances of `link_scene`
-    const GpuScene& link_scene;         // link_scene(links) uploaded
-    glm::vec3 tint{0.92f, 0.95f, 1.0f}; // a mirror's reflection times this; portals show theirs untinted
+    const std::vector<plan::ViewNode>& nodes; // plan_view_tree() for the frame's size
+    const std::vector<plan::ViewLink>& links; // their surfaces are instances of `link_scene`
+    const GpuScene& link_scene;               // link_scene(links) uploaded
+    glm::vec3 tint{0.92f, 0.95f, 1.0f};       // a mirror's reflection times this; portals show theirs untinted
     // The views' targets come from here and go back when composited
     // (end_frame() at the end); null: made and freed per view.
     TargetPool* targets = nullptr;

@@ -24,7 +24,7 @@ constexpr glm::vec4 kReflectionFrustumColor{0.9f, 0.1f, 0.9f, 1.0f}; // magenta
 
 // Line sizes in proportion to the scene: crosses 2% of its diagonal,
 // edges towards infinity twice the diagonal.
-FrustumLineStyle line_style(const scene::Bounds& bounds) {
+plan::FrustumLineStyle line_style(const scene::Bounds& bounds) {
     const float diagonal_m = glm::length(bounds.max - bounds.min);
     const float size_m = diagonal_m > 0.0f ? diagonal_m : 1.0f;
     return {0.02f * size_m, 2.0f * size_m};
@@ -36,9 +36,10 @@ Renderer::Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene
                    FogPass fog_pass, const scene::Scene& scene, std::vector<LinkGroup> link_groups)
     : context_(&context), fn_(&fn), gpu_scene_(std::move(gpu_scene)), programs_(std::move(programs)),
       fog_pass_(std::move(fog_pass)),
-      mirror_(scene.mirror), bounds_(scene.world_bounds), boxes_(instance_boxes(scene)), scene_mirror_(scene.mirror),
+      mirror_(scene.mirror), bounds_(scene.world_bounds), boxes_(plan::instance_boxes(scene)),
+      scene_mirror_(scene.mirror),
       lens_(scene.lens),
-      link_groups_(std::move(link_groups)), nonaffine_geometry_(WorldGeometry::in_object_space(scene)) {
+      link_groups_(std::move(link_groups)), nonaffine_geometry_(plan::WorldGeometry::in_object_space(scene)) {
     for (const scene::Instance& instance : scene.instances) {
         scene_worlds_.push_back(instance.world);
     }
@@ -62,11 +63,11 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
     // portal; link_group() places them for each frame's camera.
     std::vector<LinkGroup> groups;
     for (int mirrors : {0, 2, 0}) {
-        std::vector<ViewLink> links(static_cast<std::size_t>(mirrors ? mirrors : 1));
-        for (ViewLink& link : links) {
-            link.kind = mirrors ? ViewLink::Kind::Mirror : ViewLink::Kind::Portal;
+        std::vector<plan::ViewLink> links(static_cast<std::size_t>(mirrors ? mirrors : 1));
+        for (plan::ViewLink& link : links) {
+            link.kind = mirrors ? plan::ViewLink::Kind::Mirror : plan::ViewLink::Kind::Portal;
         }
-        auto quads = GpuScene::upload(fn, link_scene(links));
+        auto quads = GpuScene::upload(fn, plan::link_scene(links));
         if (!quads) {
             return frustum::Error{quads.error()};
         }
@@ -76,29 +77,30 @@ frustum::Result<Renderer> Renderer::create(const gl::Context& context, const gl:
                     std::move(groups));
 }
 
-frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(Effect effect, const RenderOptions& options,
+frustum::Result<const Renderer::LinkGroup*> Renderer::link_group(plan::Effect effect, const RenderOptions& options,
                                                                  const frustum::MatrixPair<float>& camera) const {
-    const LinkSet set = options.recursion_links;
-    const bool portal = effect == Effect::Portal;
-    LinkGroup& group = link_groups_[portal ? 0 : set == LinkSet::Mirrors ? 1 : 2];
-    auto placed = portal ? place_portal_pair(camera, bounds_, boxes_) : place_facing_links(camera, bounds_, set, boxes_);
+    const plan::LinkSet set = options.recursion_links;
+    const bool portal = effect == plan::Effect::Portal;
+    LinkGroup& group = link_groups_[portal ? 0 : set == plan::LinkSet::Mirrors ? 1 : 2];
+    auto placed = portal ? plan::place_portal_pair(camera, bounds_, boxes_) : plan::place_facing_links(camera, bounds_, set, boxes_);
     if (!placed) {
         return frustum::Error{placed.error()};
     }
     if (!portal) {
-        move_links(*placed, options.link_moves);
+        plan::move_links(*placed, options.link_moves);
     }
     for (std::size_t i = 0; i < placed->size(); ++i) {
-        ViewLink& link = (*placed)[i];
+        plan::ViewLink& link = (*placed)[i];
         link.surface_instance = group.links[i].surface_instance;
         link.exit_instance = group.links[i].exit_instance;
         link.frame_instance = group.links[i].frame_instance;
-        group.quads.set_instance_world(static_cast<std::size_t>(link.surface_instance), link_world(link, false));
+        group.quads.set_instance_world(static_cast<std::size_t>(link.surface_instance), plan::link_world(link, false));
         if (link.exit_instance >= 0) {
-            group.quads.set_instance_world(static_cast<std::size_t>(link.exit_instance), link_world(link, true));
+            group.quads.set_instance_world(static_cast<std::size_t>(link.exit_instance), plan::link_world(link, true));
         }
         if (link.frame_instance >= 0) {
-            group.quads.set_instance_world(static_cast<std::size_t>(link.frame_instance), entry_frame_world(link));
+            group.quads.set_instance_world(static_cast<std::size_t>(link.frame_instance),
+                                           plan::entry_frame_world(link));
         }
     }
     group.links = std::move(*placed);
@@ -113,7 +115,7 @@ PassContext Renderer::pass_context(const DepthPolicy& depth, const Lighting& lig
     return PassContext{*fn_, context_->api(), programs_, gpu_scene_, depth, lighting};
 }
 
-frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cameras,
+frustum::Result<image::Image> Renderer::render(plan::Effect effect, const plan::Cameras& cameras,
                                                const RenderOptions& options) const {
     auto samples = gl::choose_samples(*fn_, options.msaa_samples);
     if (!samples) {
@@ -130,12 +132,12 @@ frustum::Result<image::Image> Renderer::render(Effect effect, const Cameras& cam
     return frame->read_rgba8();
 }
 
-frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+frustum::Status Renderer::render_into(plan::Effect effect, const plan::Cameras& cameras, const RenderOptions& options,
                                       const gl::OffscreenTarget& frame) const {
     return render_into(effect, cameras, options, frame, whole_frame(frame.width(), frame.height()));
 }
 
-frustum::Status Renderer::render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+frustum::Status Renderer::render_into(plan::Effect effect, const plan::Cameras& cameras, const RenderOptions& options,
                                       const gl::OffscreenTarget& frame, const FrameWindow& window,
                                       FrameCache* cache) const {
     if (window.rect.width != frame.width() || window.rect.height != frame.height() || window.rect.x < 0 ||
@@ -173,7 +175,7 @@ frustum::Status Renderer::move_mirror(const glm::mat4& motion, const std::vector
     if (!scene_mirror_) {
         return frustum::Error{std::string(kWhere) + ": the scene has no mirror"};
     }
-    if (auto rigid = check_rigid_motion(motion, kWhere); !rigid) {
+    if (auto rigid = plan::check_rigid_motion(motion, kWhere); !rigid) {
         return rigid;
     }
     std::vector<int> moving = attached;
@@ -195,12 +197,12 @@ frustum::Status Renderer::move_mirror(const glm::mat4& motion, const std::vector
         gpu_scene_.set_instance_world(i, motion * scene_worlds_[i]);
     }
     moved_instances_ = std::move(moving);
-    mirror_ = moved_mirror(*scene_mirror_, motion);
+    mirror_ = plan::moved_mirror(*scene_mirror_, motion);
     return {};
 }
 
-frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
-                               const Cameras& cameras, const RenderOptions& options) const {
+frustum::Status Renderer::draw(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
+                               const plan::Cameras& cameras, const RenderOptions& options) const {
     std::optional<FogDraw> fog; // the plain and mirror effects draw it; the others leave it out
     if (options.fog) {
         fog = FogDraw{&fog_pass_, fit_fog(*options.fog, bounds_, ctx.clear_color),
@@ -215,8 +217,8 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         return on_frame.take_error_in("render::Renderer::render_into()");
     }
     switch (effect) {
-    case Effect::Lens: {
-        auto lens = fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
+    case plan::Effect::Lens: {
+        auto lens = plan::fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
         if (!lens) {
             return lens.take_error();
         }
@@ -225,22 +227,22 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         const int disc = lens_ ? lens_->instance : -1;
         return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
     }
-    case Effect::NonAffine: {
-        auto fitted = fit_non_affine(cameras.main.pair, bounds_, options.nonaffine, options.fit);
+    case plan::Effect::NonAffine: {
+        auto fitted = plan::fit_non_affine(cameras.main.pair, bounds_, options.nonaffine, options.fit);
         if (!fitted) {
             return fitted.take_error();
         }
-        auto slits = crossed_slits_frustum(cameras.main.pair, *fitted, ctx.depth.gpu_range());
+        auto slits = plan::crossed_slits_frustum(cameras.main.pair, *fitted, ctx.depth.gpu_range());
         if (!slits) {
             return slits.take_error();
         }
-        const SplitGeometry& world = nonaffine_geometry_.get(gpu_scene_.instances(), fitted->max_edge_m);
+        const plan::SplitGeometry& world = nonaffine_geometry_.get(gpu_scene_.instances(), fitted->max_edge_m);
         if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
             return stats.take_error();
         }
         return {};
     }
-    case Effect::Curved:
+    case plan::Effect::Curved:
         if (mirror_) {
             return draw_curved_mirror_frame(
                 ctx, frame, CurvedDraw{cameras.main.pair, *mirror_, options.curved, options.mirror_tint, bounds_});
@@ -248,41 +250,42 @@ frustum::Status Renderer::draw(Effect effect, const PassContext& ctx, const gl::
         begin_frame(ctx); // no mirror: the plain frame
         draw_scene(ctx, SceneDraw{*on_frame});
         return {};
-    case Effect::Mirror:
+    case plan::Effect::Mirror:
         if (mirror_) {
             return draw_mirror_frame(ctx, frame,
                                      MirrorDraw{cameras.main.pair, *mirror_, options.mirror_method,
                                                 options.mirror_tint, bounds_, fog});
         }
         [[fallthrough]]; // no mirror: the plain frame
-    case Effect::Plain:
+    case plan::Effect::Plain:
         begin_frame(ctx);
         draw_scene(ctx, SceneDraw{*on_frame});
         return fog ? fog_pass_.apply(ctx, frame, *on_frame, fog->params) : frustum::Status{};
-    case Effect::Portal:
-    case Effect::Recursion: {
+    case plan::Effect::Portal:
+    case plan::Effect::Recursion: {
         auto group = link_group(effect, options, cameras.main.pair);
         if (!group) {
             return frustum::Error{group.error()};
         }
         const LinkGroup& g = **group;
-        const int depth = effect == Effect::Portal ? 1 : options.recursion_depth;
-        auto nodes = plan_view_tree(cameras.main.pair, g.links,
-                                    ViewTreeRequest{depth, full_width_px, full_height_px, ViewBounds::Tight});
+        const int depth = effect == plan::Effect::Portal ? 1 : options.recursion_depth;
+        auto nodes = plan::plan_view_tree(
+            cameras.main.pair, g.links,
+            plan::ViewTreeRequest{depth, full_width_px, full_height_px, plan::ViewBounds::Tight});
         if (!nodes) {
             return frustum::Error{nodes.error()};
         }
         return draw_recursion_frame(ctx, frame,
                                     RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint, &recursion_targets_});
     }
-    case Effect::Tiles:
+    case plan::Effect::Tiles:
         return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
                                 options.tile_borders);
-    case Effect::Frustum: {
+    case plan::Effect::Frustum: {
         std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
         if (mirror_) {
-            auto reflection = plan_reflection(*mirror_, cameras.main.pair, full_width_px, full_height_px,
-                                              options.mirror_method, bounds_);
+            auto reflection = plan::plan_reflection(*mirror_, cameras.main.pair, full_width_px, full_height_px,
+                                                    options.mirror_method, bounds_);
             if (!reflection) {
                 return reflection.take_error();
             }

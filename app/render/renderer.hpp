@@ -41,7 +41,7 @@ namespace render {
 // once: tiles, mirror method, curved cap, lens grid and power, the fit, fog,
 // recursion; the stereo rig and mirror placement are the caller's) and
 // what a frame adds.
-struct RenderOptions : EffectParams {
+struct RenderOptions : plan::EffectParams {
     // Called as each pass of render_into() ends, with the pass's name
     // ("reflection" in the mirror effect, then "main view"; the portal and
     // recursion effects: "level k (n views)" after each view through k
@@ -52,9 +52,9 @@ struct RenderOptions : EffectParams {
     int height_px = 360;
     DepthPath depth = DepthPath::ClipControlWhenAvailable;
     glm::vec3 mirror_tint{0.92f, 0.95f, 1.0f};         // mirror and curved effects
-    NonAffineOptions nonaffine;                        // nonaffine effect: subdivision, culling (the slit
+    plan::NonAffineOptions nonaffine;                  // nonaffine effect: subdivision, culling (the slit
                                                        // and pivot come from `fit`, per frame)
-    std::vector<LinkMove> link_moves;                  // recursion effect: each link moved after placement
+    std::vector<plan::LinkMove> link_moves;            // recursion effect: each link moved after placement
     Lighting lighting;
     // MSAA samples of render()'s frame (gl::choose_samples()): kAutomaticSamples
     // = 4 or the context's maximum, 1 = off. render_into() uses the target's.
@@ -72,14 +72,15 @@ public:
     // to bottom), multisampled with options.msaa_samples and resolved. The frustum effect shows cameras.main (and its mirror
     // reflection) from cameras.overview; the others use cameras.main. The
     // mirror effect of a scene without a mirror is the plain frame.
-    frustum::Result<image::Image> render(Effect effect, const Cameras& cameras, const RenderOptions& options) const;
+    frustum::Result<image::Image> render(plan::Effect effect, const plan::Cameras& cameras,
+                                         const RenderOptions& options) const;
 
     // As render(), but into an existing target, which sets the size (the
     // effect is laid out for frame.width() x frame.height(); options.width_px
     // and height_px are not used, nor msaa_samples: the target's samples
     // are), and leaves it bound; a multisampled target is not resolved yet. A window renders
     // each frame this way and blits the target to its framebuffer.
-    frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+    frustum::Status render_into(plan::Effect effect, const plan::Cameras& cameras, const RenderOptions& options,
                                 const gl::OffscreenTarget& frame) const;
 
     // As render_into(), with `frame` holding window.rect of a
@@ -90,7 +91,7 @@ public:
     // target's size.
     // `cache`, when given, keeps what every tile of the frame draws the same
     // (frame_cache.hpp): pass one cache for all the tiles of one frame.
-    frustum::Status render_into(Effect effect, const Cameras& cameras, const RenderOptions& options,
+    frustum::Status render_into(plan::Effect effect, const plan::Cameras& cameras, const RenderOptions& options,
                                 const gl::OffscreenTarget& frame, const FrameWindow& window,
                                 FrameCache* cache = nullptr) const;
 
@@ -118,15 +119,15 @@ private:
     // Portal and recursion effects: the links beside the model and their
     // quads on the GPU (view_links.hpp), one group per effect / LinkSet.
     struct LinkGroup {
-        std::vector<ViewLink> links;
+        std::vector<plan::ViewLink> links;
         GpuScene quads;
     };
 
     Renderer(const gl::Context& context, const gl::Functions& fn, GpuScene gpu_scene, Programs programs,
              FogPass fog_pass, const scene::Scene& scene, std::vector<LinkGroup> link_groups);
 
-    frustum::Status draw(Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
-                         const Cameras& cameras, const RenderOptions& options) const;
+    frustum::Status draw(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
+                         const plan::Cameras& cameras, const RenderOptions& options) const;
 
     const gl::Context* context_;
     const gl::Functions* fn_;
@@ -147,11 +148,11 @@ private:
     mutable std::vector<LinkGroup> link_groups_;
     // The recursion views' targets, kept from frame to frame (mutable like the links).
     mutable TargetPool recursion_targets_;
-    frustum::Result<const LinkGroup*> link_group(Effect effect, const RenderOptions& options,
+    frustum::Result<const LinkGroup*> link_group(plan::Effect effect, const RenderOptions& options,
                                                  const frustum::MatrixPair<float>& camera) const;
     // Nonaffine effect: the scene's triangles placed by gpu_scene_'s instances
     // and split, kept while they and the fitted edge length stay (mutable like the links).
-    mutable SplitGeometryCache nonaffine_geometry_;
+    mutable plan::SplitGeometryCache nonaffine_geometry_;
 };
 
 } // namespace render

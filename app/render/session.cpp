@@ -13,14 +13,14 @@ std::variant<LoadedScene, OpenFailure> load_scene(const SessionSettings& setting
     if (!scene) {
         return OpenFailure{false, scene.error()};
     }
-    auto camera_index = find_camera(*scene, settings.camera);
+    auto camera_index = plan::find_camera(*scene, settings.camera);
     if (!camera_index) {
         return OpenFailure{true, camera_index.error()};
     }
     return LoadedScene{std::move(*scene), *camera_index};
 }
 
-std::optional<OpenFailure> Session::open(const SessionSettings& settings, const EffectParams& params,
+std::optional<OpenFailure> Session::open(const SessionSettings& settings, const plan::EffectParams& params,
                                          const SessionHooks& hooks) {
     const auto note = [&hooks](const std::string& line) {
         if (hooks.note) {
@@ -43,7 +43,7 @@ std::optional<OpenFailure> Session::open(const SessionSettings& settings, const 
     // Stereo: the cameras are made for one eye's half of the image. The
     // window and the page make their own per framebuffer; these place its mirror.
     const int eye_width_px = std::max(1, params.stereo ? settings.width_px / 2 : settings.width_px);
-    auto made = make_cameras(scene, camera_index, eye_width_px, settings.height_px);
+    auto made = plan::make_cameras(scene, camera_index, eye_width_px, settings.height_px);
     if (!made) {
         return OpenFailure{false, made.error()};
     }
@@ -51,7 +51,7 @@ std::optional<OpenFailure> Session::open(const SessionSettings& settings, const 
         note(*made->far_note);
     }
     // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
-    effects = resolve_effects(params, scene, &made->main.pair);
+    effects = plan::resolve_effects(params, scene, &made->main.pair);
     if (hooks.cameras_at_size) {
         cameras.emplace(std::move(*made));
     }

@@ -73,8 +73,8 @@ std::variant<LoadedScene, OpenFailure> load_scene(const SessionSettings& setting
 struct Session {
     scene::Scene scene;
     int camera_index = -1;
-    std::optional<Cameras> cameras; // at the settings' size (hooks.cameras_at_size)
-    ResolvedEffects effects;        // the effect values with what the scene derives (resolve_effects())
+    std::optional<plan::Cameras> cameras; // at the settings' size (hooks.cameras_at_size)
+    plan::ResolvedEffects effects;        // the effect values with what the scene derives (resolve_effects())
     std::unique_ptr<gl::Context> context;
     std::unique_ptr<gl::Functions> fn; // stable address: GL objects point to it
     std::optional<Renderer> renderer;
@@ -85,7 +85,7 @@ struct Session {
     // where) -> hooks.make_context() -> its functions -> the renderer (which
     // draws the placed mirror). With settings.verbose, notes name the
     // scene's origin and the context.
-    std::optional<OpenFailure> open(const SessionSettings& settings, const EffectParams& params,
+    std::optional<OpenFailure> open(const SessionSettings& settings, const plan::EffectParams& params,
                                     const SessionHooks& hooks);
 };
 

@@ -6,13 +6,13 @@
 
 namespace render {
 
-frustum::Result<image::Image> render_stereo(const Renderer& renderer, Effect effect, const Cameras& cameras,
-                                            const RenderOptions& options, const StereoRig& rig) {
+frustum::Result<image::Image> render_stereo(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
+                                            const RenderOptions& options, const plan::StereoRig& rig) {
     if (options.width_px % 2 != 0) {
         return frustum::Error{"render::render_stereo(): the image width must be even (two eyes side by side), got " +
                               std::to_string(options.width_px) + " px"};
     }
-    auto eyes = stereo_cameras(cameras, rig);
+    auto eyes = plan::stereo_cameras(cameras, rig);
     if (!eyes) {
         return frustum::Error{eyes.error()};
     }

@@ -17,7 +17,7 @@ namespace render {
 // (make_cameras() with width_px / 2). Errors: an odd width, the
 // stereo_cameras() ones, the renderer's, e.g.
 // "render::render_stereo(): the image width must be even (two eyes side by side), got 641 px".
-frustum::Result<image::Image> render_stereo(const Renderer& renderer, Effect effect, const Cameras& cameras,
-                                            const RenderOptions& options, const StereoRig& rig);
+frustum::Result<image::Image> render_stereo(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
+                                            const RenderOptions& options, const plan::StereoRig& rig);
 
 } // namespace render

@@ -25,7 +25,7 @@ frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& fr
     for (const frustum::Tile<float>& tile : tiles) {
         // The tiles are the whole frame's; the target draws the part of each
         // inside its window, with the tile's pair cropped to that part.
-        const PixelRect tile_rect{tile.x_px, tile.y_px, tile.width_px, tile.height_px};
+        const plan::PixelRect tile_rect{tile.x_px, tile.y_px, tile.width_px, tile.height_px};
         const auto part = intersect(tile_rect, window.rect);
         if (!part) {
             continue;
@@ -35,7 +35,7 @@ frustum::Status draw_tiles(const PassContext& ctx, const gl::OffscreenTarget& fr
             return pair.take_error_in(where);
         }
         // Each tile draws only its own pixels.
-        const PixelRect r = in_target(window, *part);
+        const plan::PixelRect r = in_target(window, *part);
         fn.Viewport(r.x, r.y, r.width, r.height);
         fn.Scissor(r.x, r.y, r.width, r.height);
         SceneDraw scene{*pair};
@@ -52,9 +52,9 @@ void draw_tile_borders(const PassContext& ctx, const FrameWindow& window,
     const gl::Functions& fn = ctx.fn;
     fn.Enable(GL_SCISSOR_TEST);
     fn.ClearColor(color.r, color.g, color.b, color.a);
-    const auto paint = [&](const PixelRect& line) {
+    const auto paint = [&](const plan::PixelRect& line) {
         if (const auto part = intersect(line, window.rect)) {
-            const PixelRect r = in_target(window, *part);
+            const plan::PixelRect r = in_target(window, *part);
             fn.Scissor(r.x, r.y, r.width, r.height);
             fn.Clear(GL_COLOR_BUFFER_BIT);
         }

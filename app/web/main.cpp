@@ -21,16 +21,16 @@ constexpr const char* kCanvas = "#canvas";
 constexpr const char* kScenePath = "/scene/showcase.gltf"; // --embed-file, see CMakeLists.txt
 
 std::unique_ptr<web::Viewer> g_viewer;
-render::Effect g_shown_effect = render::Effect::Plain;
+plan::Effect g_shown_effect = plan::Effect::Plain;
 
 void report(const std::string& message) {
     std::fprintf(stderr, "frustum-web: %s\n", message.c_str());
     EM_ASM({ if (Module.frustumError) Module.frustumError(UTF8ToString($0)); }, message.c_str());
 }
 
-void mark_effect(render::Effect effect) {
+void mark_effect(plan::Effect effect) {
     g_shown_effect = effect;
-    const std::string name(render::to_string(effect));
+    const std::string name(plan::to_string(effect));
     EM_ASM({ if (Module.frustumShowEffect) Module.frustumShowEffect(UTF8ToString($0)); }, name.c_str());
 }
 
@@ -64,11 +64,11 @@ bool parse_arguments(int argc, char** argv, web::ViewerOptions& options) {
             return false;
         }
         const std::string_view value = argv[++i];
-        const auto effect = render::parse_effect(value);
+        const auto effect = plan::parse_effect(value);
         if (!effect) {
             std::string names;
-            for (render::Effect known : render::kAllEffects) {
-                names += (names.empty() ? "" : ", ") + std::string(render::to_string(known));
+            for (plan::Effect known : plan::kAllEffects) {
+                names += (names.empty() ? "" : ", ") + std::string(plan::to_string(known));
             }
             report("#effect must be one of " + names + ", got '" + std::string(value) + "'");
             return false;
@@ -82,7 +82,7 @@ bool parse_arguments(int argc, char** argv, web::ViewerOptions& options) {
 
 // The page's effect buttons: the same as pressing 1..9 in the window.
 extern "C" EMSCRIPTEN_KEEPALIVE void frustum_web_select_effect(int index) {
-    if (g_viewer && index >= 0 && index < static_cast<int>(std::size(render::kAllEffects))) {
+    if (g_viewer && index >= 0 && index < static_cast<int>(std::size(plan::kAllEffects))) {
         gl::KeyPressed press;
         press.key = gl::Key::Character;
         press.character = static_cast<char>('1' + index);
@@ -106,8 +106,8 @@ int main(int argc, char** argv) {
     }
     g_viewer = std::move(*viewer);
     std::printf("frustum-web: %s\n", gl::summary(g_viewer->context_info()).c_str());
-    for (int i = 0; i < static_cast<int>(std::size(render::kAllEffects)); ++i) {
-        const std::string name(render::to_string(render::kAllEffects[i]));
+    for (int i = 0; i < static_cast<int>(std::size(plan::kAllEffects)); ++i) {
+        const std::string name(plan::to_string(plan::kAllEffects[i]));
         EM_ASM({ if (Module.frustumAddEffect) Module.frustumAddEffect(UTF8ToString($0), $1); }, name.c_str(), i);
     }
     mark_effect(options.effect);

@@ -40,11 +40,11 @@ frustum::Result<std::unique_ptr<Viewer>> Viewer::create(const ViewerOptions& opt
         }
         return std::unique_ptr<gl::Context>(std::move(*context));
     };
-    if (auto failure = viewer->session_.open(settings, render::EffectParams{}, hooks)) {
+    if (auto failure = viewer->session_.open(settings, plan::EffectParams{}, hooks)) {
         return frustum::Error{failure->message};
     }
     window::ViewerState state;
-    static_cast<render::EffectParams&>(state) = viewer->session_.effects.params;
+    static_cast<plan::EffectParams&>(state) = viewer->session_.effects.params;
     state.effect = options.effect;
     viewer->step_.emplace(viewer->session_, std::move(state));
     auto painter = window::FramePainter::create(*viewer->session_.fn);

@@ -28,7 +28,7 @@ namespace web {
 struct ViewerOptions {
     std::string scene_path;             // a glTF file in the page's embedded file system
     std::string canvas = "#canvas";     // CSS selector of the WebGL 2 canvas
-    render::Effect effect = render::Effect::Plain;
+    plan::Effect effect = plan::Effect::Plain;
     int width_px = 640, height_px = 360; // the canvas at start-up: where a derived mirror is placed
     std::function<void(std::string_view)> note; // where the mirror went (render::Session::open()); may be empty
 };
@@ -54,7 +54,7 @@ public:
     // drawing-buffer size). True when it drew.
     frustum::Result<bool> draw_if_changed(int width_px, int height_px);
 
-    render::Effect effect() const { return step_->state().effect; }
+    plan::Effect effect() const { return step_->state().effect; }
     const gl::ContextInfo& context_info() const { return session_.context->describe(); }
 
 private:

@@ -21,15 +21,15 @@ constexpr float kLinkStepFraction = 0.02f;     // recursion mirrors: of the scen
 constexpr float kMinDistanceFraction = 0.02f;  // orbit distance limits, of the scene radius
 constexpr float kMaxDistanceFraction = 10.0f;
 
-constexpr std::size_t effect_count() { return std::size(render::kAllEffects); }
+constexpr std::size_t effect_count() { return std::size(plan::kAllEffects); }
 
-render::MirrorMethod next_method(render::MirrorMethod method) {
+plan::MirrorMethod next_method(plan::MirrorMethod method) {
     switch (method) {
-    case render::MirrorMethod::Oblique: return render::MirrorMethod::Rectangle;
-    case render::MirrorMethod::Rectangle: return render::MirrorMethod::ReflectOnly;
-    case render::MirrorMethod::ReflectOnly: return render::MirrorMethod::Oblique;
+    case plan::MirrorMethod::Oblique: return plan::MirrorMethod::Rectangle;
+    case plan::MirrorMethod::Rectangle: return plan::MirrorMethod::ReflectOnly;
+    case plan::MirrorMethod::ReflectOnly: return plan::MirrorMethod::Oblique;
     }
-    return render::MirrorMethod::Oblique;
+    return plan::MirrorMethod::Oblique;
 }
 
 } // namespace
@@ -110,7 +110,7 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
     }
     const char c = press.character;
     if (c >= '1' && c <= '9' && static_cast<std::size_t>(c - '1') < effect_count()) {
-        state.effect = render::kAllEffects[c - '1'];
+        state.effect = plan::kAllEffects[c - '1'];
     } else if (c == 'H' && !press.repeat) {
         state.show_help = !state.show_help;
     } else if (c == 'P' && !press.repeat) {
@@ -124,7 +124,7 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
     } else if (c == 'O' && !press.repeat) {
         state.mirror_method = next_method(state.mirror_method);
     } else if (c == ',' || c == '.') {
-        state.recursion_depth = std::clamp(state.recursion_depth + (c == ',' ? -1 : 1), 0, render::kMaxRecursionDepth);
+        state.recursion_depth = std::clamp(state.recursion_depth + (c == ',' ? -1 : 1), 0, plan::kMaxRecursionDepth);
     } else if (c == '[' || c == ']') {
         state.lens_power = next_lens_power(state.lens_power, c == '[' ? -1 : 1);
     } else if (c == '=' || c == '+' || c == '-') {
@@ -137,12 +137,12 @@ void Controls::key(const gl::KeyPressed& press, const frustum::MatrixPair<float>
 // Z X: the left facing mirror out / in, C V: the right one; with Shift
 // they turn instead (5 degrees per press). A push step is 2% of the scene's
 // bounding radius.
-bool Controls::link_key(const gl::KeyPressed& press, std::vector<render::LinkMove>& moves) const {
+bool Controls::link_key(const gl::KeyPressed& press, std::vector<plan::LinkMove>& moves) const {
     const char c = press.character;
     if ((c != 'Z' && c != 'X' && c != 'C' && c != 'V') || moves.size() < 2) {
         return false;
     }
-    render::LinkMove& move = moves[c == 'Z' || c == 'X' ? 0 : 1];
+    plan::LinkMove& move = moves[c == 'Z' || c == 'X' ? 0 : 1];
     const float sign = c == 'X' || c == 'V' ? 1.0f : -1.0f;
     if (press.mods.shift) {
         move.turn_rad += sign * kKeyTurnRad;

@@ -34,15 +34,15 @@ inline constexpr float kMaxLensPower = 2.0f;
 // The effect values (plan/effect_params.hpp: their defaults stated there
 // once; the keys change tiles, mirror method, lens power and recursion
 // depth) and what only the window has.
-struct ViewerState : render::EffectParams {
-    render::Effect effect = render::Effect::Plain;
+struct ViewerState : plan::EffectParams {
+    plan::Effect effect = plan::Effect::Plain;
     // Unset: the scene's main camera pair exactly (no camera input yet, or
     // after R). Set on the first camera input, starting where that camera is.
     std::optional<OrbitCamera> orbit;
     MirrorPose mirror;
     // Recursion effect: the left [0] and right [1] facing mirror, each moved
     // on its own (keys Z X, C V; with Shift turned) after the frame places them.
-    std::vector<render::LinkMove> link_moves = std::vector<render::LinkMove>(2);
+    std::vector<plan::LinkMove> link_moves = std::vector<plan::LinkMove>(2);
     bool show_help = false;
     bool show_panel = false; // the control panel (key P; --panel starts with it)
     bool show_inset = false; // the frustum view in a corner
@@ -71,7 +71,7 @@ private:
     void key(const gl::KeyPressed& press, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
     bool camera_key(const gl::KeyPressed& press, OrbitCamera& orbit) const;
     bool mirror_key(const gl::KeyPressed& press, MirrorPose& pose) const;
-    bool link_key(const gl::KeyPressed& press, std::vector<render::LinkMove>& moves) const;
+    bool link_key(const gl::KeyPressed& press, std::vector<plan::LinkMove>& moves) const;
     OrbitCamera& start_orbit(const frustum::MatrixPair<float>& main_camera, ViewerState& state) const;
     void drag(const glm::dvec2& delta, const frustum::MatrixPair<float>& main_camera, ViewerState& state);
 

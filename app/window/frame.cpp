@@ -13,7 +13,7 @@ constexpr int kMinInsetFramebufferHeightPx = 64;
 
 } // namespace
 
-frustum::Result<Frame> make_frame(const ViewerState& state, const render::Cameras& scene_cameras,
+frustum::Result<Frame> make_frame(const ViewerState& state, const plan::Cameras& scene_cameras,
                                   const OrbitProjection& projection, const scene::Bounds& bounds, int width_px,
                                   int height_px) {
     Frame frame{state.effect, scene_cameras};
@@ -29,7 +29,7 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     frame.options.height_px = height_px;
     // The effect values as the state holds them (resolved from the scene
     // by the caller), the tile counts and the lens grid within this frame.
-    static_cast<render::EffectParams&>(frame.options) = state;
+    static_cast<plan::EffectParams&>(frame.options) = state;
     frame.options.tile_columns = std::min(state.tile_columns, width_px);
     frame.options.tile_rows = std::min(state.tile_rows, height_px);
     frame.options.lens_grid = std::min(state.lens_grid, std::min(width_px, height_px));
@@ -43,8 +43,8 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const render::Camera
     return frame;
 }
 
-render::Effect inset_effect(render::Effect main_effect) {
-    return main_effect == render::Effect::Frustum ? render::Effect::Plain : render::Effect::Frustum;
+plan::Effect inset_effect(plan::Effect main_effect) {
+    return main_effect == plan::Effect::Frustum ? plan::Effect::Plain : plan::Effect::Frustum;
 }
 
 std::optional<gl::WindowRect> inset_rect(int width_px, int height_px) {

@@ -20,8 +20,8 @@ std::optional<double> FrameClock::tick(TimePoint now) {
     return mean_ms;
 }
 
-std::string window_title(render::Effect effect, std::optional<double> frame_ms) {
-    std::string title = "frustum-demo: " + std::string(render::to_string(effect));
+std::string window_title(plan::Effect effect, std::optional<double> frame_ms) {
+    std::string title = "frustum-demo: " + std::string(plan::to_string(effect));
     if (frame_ms) {
         char text[32];
         std::snprintf(text, sizeof text, " | %.1f ms/frame", *frame_ms);

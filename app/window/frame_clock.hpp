@@ -25,6 +25,6 @@ private:
 };
 
 // "frustum-demo: mirror | 4.2 ms/frame | H: help" (the time left out while unknown).
-std::string window_title(render::Effect effect, std::optional<double> frame_ms);
+std::string window_title(plan::Effect effect, std::optional<double> frame_ms);
 
 } // namespace window

@@ -40,7 +40,7 @@ frustum::Result<const gl::OffscreenTarget*> FramePainter::sized(std::optional<gl
 
 frustum::Status FramePainter::paint_stereo(const render::Renderer& renderer, const Frame& frame, int width_px,
                                            int height_px) {
-    auto eyes = render::stereo_cameras(frame.cameras, *frame.stereo);
+    auto eyes = plan::stereo_cameras(frame.cameras, *frame.stereo);
     if (!eyes) {
         return frustum::Error{eyes.error()};
     }
@@ -51,7 +51,7 @@ frustum::Status FramePainter::paint_stereo(const render::Renderer& renderer, con
     }
     constexpr float kBlack[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     gl::clear_window_rect(*fn_, {0, 0, width_px, height_px}, kBlack); // an odd width's last column
-    const std::pair<const render::Cameras*, int> sides[] = {{&eyes->left, 0}, {&eyes->right, eye_width_px}};
+    const std::pair<const plan::Cameras*, int> sides[] = {{&eyes->left, 0}, {&eyes->right, eye_width_px}};
     for (const auto& [cameras, x_px] : sides) {
         if (auto status = renderer.render_into(frame.effect, *cameras, frame.options, **target); !status) {
             return status;

@@ -40,7 +40,7 @@ frustum::Status FrameStep::take_input(const std::vector<gl::InputEvent>& events,
         height_px_ = height_px;
     }
     if (!cameras_) {
-        auto made = render::make_cameras(session_.scene, session_.camera_index, eye_width_px_, height_px_);
+        auto made = plan::make_cameras(session_.scene, session_.camera_index, eye_width_px_, height_px_);
         if (!made) {
             return made.take_error();
         }
@@ -65,7 +65,7 @@ frustum::Result<Frame> FrameStep::frame() {
     if (!frame) {
         return frame.take_error();
     }
-    frame->stereo = render::stereo_rig(state_, frame->cameras.main.pair, session_.scene);
+    frame->stereo = plan::stereo_rig(state_, frame->cameras.main.pair, session_.scene);
     return frame;
 }
 

@@ -62,7 +62,7 @@ private:
     Controls controls_;
     ViewerState state_;
     MirrorPose applied_pose_;            // where the renderer's mirror is
-    std::optional<render::Cameras> cameras_;
+    std::optional<plan::Cameras> cameras_;
     int eye_width_px_ = 0;
     int height_px_ = 0;
 };

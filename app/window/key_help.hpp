@@ -15,7 +15,7 @@ struct KeyHelp {
     std::string action;
 };
 
-// Every binding, in the order shown; the effect keys list render::kAllEffects.
+// Every binding, in the order shown; the effect keys list plan::kAllEffects.
 std::vector<KeyHelp> key_help();
 
 // The help overlay: a status line (effect, tiles, mirror camera, lens

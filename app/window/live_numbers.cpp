@@ -46,17 +46,17 @@ LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
         *point = frustum::to_point(*point, tolerance);
     }
     const int width_px = frame.options.width_px, height_px = frame.options.height_px;
-    const bool mirror_pass = frame.effect == render::Effect::Mirror || frame.effect == render::Effect::Curved ||
-                             frame.effect == render::Effect::Frustum; // the effects that plan the reflection
+    const bool mirror_pass = frame.effect == plan::Effect::Mirror || frame.effect == plan::Effect::Curved ||
+                             frame.effect == plan::Effect::Frustum; // the effects that plan the reflection
     if (scene.mirror) {
-        numbers.mirror_rect = render::mirror_screen_rect(*scene.mirror, camera, width_px, height_px);
+        numbers.mirror_rect = plan::mirror_screen_rect(*scene.mirror, camera, width_px, height_px);
     }
     if (scene.mirror && mirror_pass) {
-        PassTiming timing{"mirror pair (" + std::string(render::to_string(frame.options.mirror_method)) + ")", 0.0, ""};
-        frustum::Result<std::optional<render::ReflectionView>> view = frustum::Error{""};
+        PassTiming timing{"mirror pair (" + std::string(plan::to_string(frame.options.mirror_method)) + ")", 0.0, ""};
+        frustum::Result<std::optional<plan::ReflectionView>> view = frustum::Error{""};
         timing.cpu_us = microseconds([&] {
-            view = render::plan_reflection(*scene.mirror, camera, width_px, height_px, frame.options.mirror_method,
-                                           scene.world_bounds);
+            view = plan::plan_reflection(*scene.mirror, camera, width_px, height_px, frame.options.mirror_method,
+                                         scene.world_bounds);
         });
         timing.result = !view ? view.error()
                         : *view ? std::to_string((*view)->texture_width_px) + "x" +
@@ -64,20 +64,20 @@ LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
                                 : "mirror not seen";
         numbers.passes.push_back(std::move(timing));
     }
-    if (frame.effect == render::Effect::Recursion) {
+    if (frame.effect == plan::Effect::Recursion) {
         PassTiming timing{"recursion views (depth " + std::to_string(frame.options.recursion_depth) + ")", 0.0, ""};
-        frustum::Result<std::vector<render::ViewNode>> nodes = frustum::Error{""};
+        frustum::Result<std::vector<plan::ViewNode>> nodes = frustum::Error{""};
         timing.cpu_us = microseconds([&] {
-            auto links = render::place_facing_links(camera, scene.world_bounds, frame.options.recursion_links,
-                                                    render::instance_boxes(scene));
+            auto links = plan::place_facing_links(camera, scene.world_bounds, frame.options.recursion_links,
+                                                  plan::instance_boxes(scene));
             if (!links) {
                 nodes = links.take_error();
                 return;
             }
-            render::move_links(*links, frame.options.link_moves);
-            nodes = render::plan_view_tree(camera, *links,
-                                           {frame.options.recursion_depth, width_px, height_px,
-                                            render::ViewBounds::Tight});
+            plan::move_links(*links, frame.options.link_moves);
+            nodes = plan::plan_view_tree(camera, *links,
+                                         {frame.options.recursion_depth, width_px, height_px,
+                                          plan::ViewBounds::Tight});
         });
         timing.result = nodes ? std::to_string(nodes->size()) + " views" : nodes.error();
         numbers.passes.push_back(std::move(timing));

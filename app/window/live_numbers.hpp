@@ -32,7 +32,7 @@ struct LiveNumbers {
     frustum::FrustumPlanes<float> planes; // normalized, inward-positive (§3.1)
     frustum::KeyPoints<float> points;     // corners C1..C8, eye O, centre D in canonical form
                                           // (to_point: w = 1, or w = 0 with |xyz| = 1 at infinity; §3.2)
-    std::optional<render::PixelRect> mirror_rect; // from the bottom-left; empty: none on screen
+    std::optional<plan::PixelRect> mirror_rect; // from the bottom-left; empty: none on screen
     std::vector<PassTiming> passes;
 };
 

@@ -36,10 +36,10 @@ struct OrbitCamera {
 // The projection the orbit draws with (vertical fov; the aspect comes from
 // the framebuffer each frame).
 struct OrbitProjection {
-    float yfov_rad = 0.785398163f; // 45 degrees, as render::framing_camera
+    float yfov_rad = 0.785398163f; // 45 degrees, as plan::framing_camera
     // The scene camera's near and far (far unset: infinite). near unset:
     // fitted to the scene's bounding sphere from the current distance, as
-    // render::framing_camera does: near (d - r) / 2 (at least r / 1000),
+    // plan::framing_camera does: near (d - r) / 2 (at least r / 1000),
     // far d + 2 r.
     std::optional<float> near_m;
     std::optional<float> far_m;

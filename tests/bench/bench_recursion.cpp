@@ -1,7 +1,7 @@
 // Recursive mirrors (issue 16, docs/performance.md "Portals and recursive
 // mirrors"), 1280x720, depth 0..6, two layouts:
 //   beside: the recursion effect's two facing mirrors beside the showcase's
-//           model (render::place_facing_links), the showcase's camera;
+//           model (plan::place_facing_links), the showcase's camera;
 //   room:   two facing mirrors on the side walls of a closed room, the
 //           camera looking into one (bench_recursion_room.hpp).
 // Each drawn two ways:
@@ -42,7 +42,7 @@ using bench_render::kWidthPx;
 // One layout: its camera and links (CPU only).
 struct Layout {
     frustum::MatrixPair<float> camera;
-    std::vector<render::ViewLink> links;
+    std::vector<plan::ViewLink> links;
     const scene::Scene* scene; // what the layout's renderer draws
 };
 
@@ -50,7 +50,7 @@ const Layout& layout(const std::string& name) {
     static const std::map<std::string, Layout> layouts = [] {
         std::map<std::string, Layout> out;
         const auto camera = bench_render::main_camera();
-        auto links = render::place_facing_links(camera, bench_render::showcase().world_bounds, render::LinkSet::Mirrors);
+        auto links = plan::place_facing_links(camera, bench_render::showcase().world_bounds, plan::LinkSet::Mirrors);
         if (!links) {
             throw std::runtime_error(links.error());
         }
@@ -62,8 +62,8 @@ const Layout& layout(const std::string& name) {
     return layouts.at(name);
 }
 
-std::vector<render::ViewNode> plan(const Layout& l, int depth, render::ViewBounds bounds) {
-    auto nodes = render::plan_view_tree(l.camera, l.links, {depth, kWidthPx, kHeightPx, bounds});
+std::vector<plan::ViewNode> view_tree(const Layout& l, int depth, plan::ViewBounds bounds) {
+    auto nodes = plan::plan_view_tree(l.camera, l.links, {depth, kWidthPx, kHeightPx, bounds});
     if (!nodes) {
         throw std::runtime_error(nodes.error());
     }
@@ -75,7 +75,7 @@ struct Gpu {
     std::unique_ptr<bench_render::Gpu> gpu;
     std::optional<gl::OffscreenTarget> frame;
     struct Drawn {
-        std::vector<render::ViewLink> links; // the layout's, with their instances in `quads`
+        std::vector<plan::ViewLink> links;   // the layout's, with their instances in `quads`
         std::optional<render::Renderer> own; // the room's renderer (beside uses gpu's)
         std::optional<render::GpuScene> quads;
     };
@@ -102,7 +102,7 @@ Gpu& gpu() {
         for (const char* name : {"beside", "room"}) {
             Gpu::Drawn d;
             d.links = layout(name).links;
-            auto quads = render::GpuScene::upload(*out.gpu->fn, render::link_scene(d.links));
+            auto quads = render::GpuScene::upload(*out.gpu->fn, plan::link_scene(d.links));
             if (!quads) {
                 throw std::runtime_error(quads.error());
             }
@@ -123,11 +123,11 @@ Gpu& gpu() {
 
 // kept_targets: the views' targets from a render::TargetPool kept across
 // the frames (the renderer's way), else made and freed per view.
-void frame_case(benchmark::State& state, const std::string& name, int depth, render::ViewBounds bounds,
+void frame_case(benchmark::State& state, const std::string& name, int depth, plan::ViewBounds bounds,
                 bool kept_targets = false) {
     Gpu& s = gpu();
     const Gpu::Drawn& d = s.drawn.at(name);
-    const auto nodes = plan(layout(name), depth, bounds);
+    const auto nodes = view_tree(layout(name), depth, bounds);
     const render::PassContext ctx = d.own ? d.own->pass_context(*s.gpu->depth, render::Lighting{}) : s.gpu->pass();
     render::TargetPool pool;
     const render::RecursionDraw draw{nodes, d.links, *d.quads, glm::vec3(1.0f), kept_targets ? &pool : nullptr};
@@ -148,7 +148,7 @@ void frame_case(benchmark::State& state, const std::string& name, int depth, ren
     state.counters["samples_written"] = static_cast<double>(fragments.written);
     state.counters["views"] = static_cast<double>(nodes.size());
     double rect_px = 0.0; // the views' rectangles, level 0 included
-    for (const render::ViewNode& node : nodes) {
+    for (const plan::ViewNode& node : nodes) {
         rect_px += static_cast<double>(node.rect.width) * node.rect.height;
     }
     state.counters["viewport_px"] = rect_px;
@@ -166,7 +166,7 @@ void plan_case(benchmark::State& state, const std::string& name, int depth) {
     const Layout& l = layout(name);
     std::size_t views = 0;
     for (auto _ : state) {
-        auto nodes = render::plan_view_tree(l.camera, l.links, {depth, kWidthPx, kHeightPx, render::ViewBounds::Tight});
+        auto nodes = plan::plan_view_tree(l.camera, l.links, {depth, kWidthPx, kHeightPx, plan::ViewBounds::Tight});
         views = nodes ? nodes->size() : 0;
         benchmark::DoNotOptimize(nodes);
     }
@@ -220,20 +220,20 @@ int main(int argc, char** argv) {
             const std::string d = std::to_string(depth);
             benchmark::RegisterBenchmark(("recursion/" + name + "/tight/depth:" + d).c_str(),
                                          [name, depth](benchmark::State& s) {
-                                             frame_case(s, name, depth, render::ViewBounds::Tight);
+                                             frame_case(s, name, depth, plan::ViewBounds::Tight);
                                          })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
             // Depth 0: the camera's view alone, culled (tight) or not (full).
             benchmark::RegisterBenchmark(("recursion/" + name + "/full/depth:" + d).c_str(),
                                          [name, depth](benchmark::State& s) {
-                                             frame_case(s, name, depth, render::ViewBounds::FullViewport);
+                                             frame_case(s, name, depth, plan::ViewBounds::FullViewport);
                                          })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
             if (depth == 2 || depth == 4) {
-                for (const auto& [bounds, label] : {std::pair{render::ViewBounds::Tight, "tight"},
-                                                    std::pair{render::ViewBounds::FullViewport, "full"}}) {
+                for (const auto& [bounds, label] : {std::pair{plan::ViewBounds::Tight, "tight"},
+                                                    std::pair{plan::ViewBounds::FullViewport, "full"}}) {
                     benchmark::RegisterBenchmark(
                         ("recursion/" + name + "/" + label + "/depth:" + d + "/kept_targets").c_str(),
                         [name, depth, bounds = bounds](benchmark::State& s) { frame_case(s, name, depth, bounds, true); })

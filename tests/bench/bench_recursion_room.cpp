@@ -24,12 +24,12 @@ glm::mat4 quad_world(const glm::vec3& c, const glm::vec3& u, const glm::vec3& v,
 // A box as six quads (one draw and one culling test each).
 void add_box(scene::Scene& s, const glm::vec3& c, const glm::vec3& half, const glm::vec4& color) {
     const glm::vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
-    render::add_quad_instance(s, quad_world(c + half.x * X, Y, Z, 2 * half.y, 2 * half.z), color, "box");
-    render::add_quad_instance(s, quad_world(c - half.x * X, Z, Y, 2 * half.z, 2 * half.y), color, "box");
-    render::add_quad_instance(s, quad_world(c + half.y * Y, Z, X, 2 * half.z, 2 * half.x), color, "box");
-    render::add_quad_instance(s, quad_world(c - half.y * Y, X, Z, 2 * half.x, 2 * half.z), color, "box");
-    render::add_quad_instance(s, quad_world(c + half.z * Z, X, Y, 2 * half.x, 2 * half.y), color, "box");
-    render::add_quad_instance(s, quad_world(c - half.z * Z, Y, X, 2 * half.y, 2 * half.x), color, "box");
+    plan::add_quad_instance(s, quad_world(c + half.x * X, Y, Z, 2 * half.y, 2 * half.z), color, "box");
+    plan::add_quad_instance(s, quad_world(c - half.x * X, Z, Y, 2 * half.z, 2 * half.y), color, "box");
+    plan::add_quad_instance(s, quad_world(c + half.y * Y, Z, X, 2 * half.z, 2 * half.x), color, "box");
+    plan::add_quad_instance(s, quad_world(c - half.y * Y, X, Z, 2 * half.x, 2 * half.z), color, "box");
+    plan::add_quad_instance(s, quad_world(c + half.z * Z, X, Y, 2 * half.x, 2 * half.y), color, "box");
+    plan::add_quad_instance(s, quad_world(c - half.z * Z, Y, X, 2 * half.y, 2 * half.x), color, "box");
 }
 
 frustum::Frame<float> frame(const glm::vec3& origin, const glm::vec3& x) {
@@ -49,23 +49,23 @@ Room make_room(int width_px, int height_px) {
     for (float x = -kHalfWidthM; x < kHalfWidthM - 1e-3f; x += kTileM) {
         for (float z = -kHalfDepthM; z < kHalfDepthM - 1e-3f; z += kTileM) {
             const bool dark = (static_cast<int>((x + kHalfWidthM) / kTileM) + static_cast<int>((z + kHalfDepthM) / kTileM)) % 2;
-            render::add_quad_instance(s, quad_world({x + 0.5f * kTileM, 0.0f, z + 0.5f * kTileM}, Z, X, kTileM, kTileM),
-                                      dark ? glm::vec4(0.35f, 0.35f, 0.38f, 1) : glm::vec4(0.85f, 0.85f, 0.8f, 1),
-                                      "floor tile");
+            plan::add_quad_instance(s, quad_world({x + 0.5f * kTileM, 0.0f, z + 0.5f * kTileM}, Z, X, kTileM, kTileM),
+                                    dark ? glm::vec4(0.35f, 0.35f, 0.38f, 1) : glm::vec4(0.85f, 0.85f, 0.8f, 1),
+                                    "floor tile");
         }
     }
     // Ceiling, the end walls, the side walls (behind the mirrors).
     const glm::vec4 wall(0.75f, 0.68f, 0.55f, 1), end(0.55f, 0.65f, 0.75f, 1);
-    render::add_quad_instance(s, quad_world({0, kHeightM, 0}, X, Z, 2 * kHalfWidthM, 2 * kHalfDepthM),
-                              glm::vec4(0.9f, 0.9f, 0.9f, 1), "ceiling");
-    render::add_quad_instance(s, quad_world({0, 0.5f * kHeightM, -kHalfDepthM}, X, Y, 2 * kHalfWidthM, kHeightM), end,
-                              "far wall");
-    render::add_quad_instance(s, quad_world({0, 0.5f * kHeightM, kHalfDepthM}, -X, Y, 2 * kHalfWidthM, kHeightM), end,
-                              "near wall");
-    render::add_quad_instance(s, quad_world({-kHalfWidthM, 0.5f * kHeightM, 0}, -Z, Y, 2 * kHalfDepthM, kHeightM), wall,
-                              "left wall");
-    render::add_quad_instance(s, quad_world({kHalfWidthM, 0.5f * kHeightM, 0}, Z, Y, 2 * kHalfDepthM, kHeightM), wall,
-                              "right wall");
+    plan::add_quad_instance(s, quad_world({0, kHeightM, 0}, X, Z, 2 * kHalfWidthM, 2 * kHalfDepthM),
+                            glm::vec4(0.9f, 0.9f, 0.9f, 1), "ceiling");
+    plan::add_quad_instance(s, quad_world({0, 0.5f * kHeightM, -kHalfDepthM}, X, Y, 2 * kHalfWidthM, kHeightM), end,
+                            "far wall");
+    plan::add_quad_instance(s, quad_world({0, 0.5f * kHeightM, kHalfDepthM}, -X, Y, 2 * kHalfWidthM, kHeightM), end,
+                            "near wall");
+    plan::add_quad_instance(s, quad_world({-kHalfWidthM, 0.5f * kHeightM, 0}, -Z, Y, 2 * kHalfDepthM, kHeightM), wall,
+                            "left wall");
+    plan::add_quad_instance(s, quad_world({kHalfWidthM, 0.5f * kHeightM, 0}, Z, Y, 2 * kHalfDepthM, kHeightM), wall,
+                            "right wall");
     // Furniture: a grid of boxes of three sizes and colours (4 x 6).
     const glm::vec4 colors[3] = {{0.2f, 0.45f, 0.85f, 1}, {0.9f, 0.6f, 0.15f, 1}, {0.25f, 0.7f, 0.35f, 1}};
     int i = 0;
@@ -78,7 +78,7 @@ Room make_room(int width_px, int height_px) {
     s.world_bounds = {{-kHalfWidthM, 0.0f, -kHalfDepthM}, {kHalfWidthM, kHeightM, kHalfDepthM}};
 
     // The mirrors, 1 cm in front of their walls.
-    render::ViewLink left, right;
+    plan::ViewLink left, right;
     left.entry = frame({-kHalfWidthM + 0.01f, 1.5f, 0.0f}, -Z);  // normal (-z) x y = +x
     right.entry = frame({kHalfWidthM - 0.01f, 1.5f, 0.0f}, Z);   // normal z x y = -x
     left.half_width_m = right.half_width_m = 1.5f;

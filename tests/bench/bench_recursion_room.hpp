@@ -19,7 +19,7 @@ namespace bench_recursion {
 
 struct Room {
     scene::Scene scene;                 // the room and its furniture (no mirrors: they are the links)
-    std::vector<render::ViewLink> links; // the two mirrors (render::link_scene() draws them)
+    std::vector<plan::ViewLink> links; // the two mirrors (plan::link_scene() draws them)
     frustum::MatrixPair<float> camera;  // at width_px x height_px
 };
 

@@ -7,7 +7,7 @@
 //     fragments;
 //   - N x N crop tiles (render::draw_tiled_frame) versus one full frame;
 //   - the lens effect (render::draw_lens_frame, N x N lens tiles) versus its
-//     per-pixel reference (render::draw_lens_reference) and the plain frame,
+//     per-pixel reference (reference::draw_lens_reference) and the plain frame,
 //     and the CPU cost of the lens tiles;
 //   - the CPU cost of a frame's matrix-pair updates, analytic versus
 //     glm::inverse.
@@ -86,8 +86,8 @@ T checked(frustum::Result<T> result, const char* what) {
 // surface into a texture the size of the mirror's screen rectangle.
 void draw_tight(const render::PassContext& ctx, const gl::OffscreenTarget& target, const MirrorCase& c,
                 bool count_all) {
-    const auto plan = render::plan_reflection(mirror(), c.camera, kWidthPx, kHeightPx, render::MirrorMethod::Oblique,
-                                              showcase().world_bounds);
+    const auto plan = plan::plan_reflection(mirror(), c.camera, kWidthPx, kHeightPx, plan::MirrorMethod::Oblique,
+                                            showcase().world_bounds);
     if (!plan || !plan->has_value()) {
         throw std::runtime_error("no reflection for mirror case " + c.label);
     }
@@ -172,12 +172,12 @@ void draw_lens(const render::PassContext& ctx, const gl::OffscreenTarget& target
     }
 }
 
-// Its per-pixel reference (render::draw_lens_reference: the unwarped view
+// Its per-pixel reference (reference::draw_lens_reference: the unwarped view
 // into nested textures at `supersampling` x the frame's resolution, then
 // eq. 34 per pixel as a texture remap).
 void draw_lens_ref(const render::PassContext& ctx, const gl::OffscreenTarget& target,
                          const render::LensDraw& draw, int supersampling) {
-    if (auto levels = render::draw_lens_reference(ctx, target, draw, supersampling); !levels) {
+    if (auto levels = reference::draw_lens_reference(ctx, target, draw, supersampling); !levels) {
         throw std::runtime_error(levels.error());
     }
 }
@@ -304,7 +304,7 @@ Counts count_everything(const std::vector<MirrorCase>& cases, std::string& why) 
         auto f = count_fragments(*gpu, [&](bool) { draw_lens_ref(ctx, full, lens_draw(1), k); });
         f.rasterized = -1;
         counts.lens_reference[k] = f;
-        counts.lens_reference_levels[k] = checked(render::draw_lens_reference(ctx, full, lens_draw(1), k), "levels");
+        counts.lens_reference_levels[k] = checked(reference::draw_lens_reference(ctx, full, lens_draw(1), k), "levels");
         save(full, "lens-reference-" + std::to_string(k));
     }
     return counts;
@@ -354,7 +354,7 @@ void register_gpu_benchmarks(Timing& t) {
         // into a new texture + composite), for scale.
         const gl::OffscreenTarget* frame = &*t.frame;
         register_gpu(prefix + "renderer_frame", [ctx, frame, c] {
-            const render::MirrorDraw draw{c->camera, mirror(), render::MirrorMethod::Oblique,
+            const render::MirrorDraw draw{c->camera, mirror(), plan::MirrorMethod::Oblique,
                                           glm::vec3(0.92f, 0.95f, 1.0f), showcase().world_bounds};
             if (auto status = render::draw_mirror_frame(ctx, *frame, draw); !status) {
                 throw std::runtime_error(status.error());

@@ -49,11 +49,11 @@ struct CpuCases {
 const CpuCases& cases() {
     static const CpuCases c = [] {
         const scene::Scene& s = showcase();
-        const auto index = render::find_camera(s, std::nullopt);
+        const auto index = plan::find_camera(s, std::nullopt);
         const scene::Camera& cam = s.cameras[static_cast<std::size_t>(*index)];
         const scene::MirrorRect& m = *s.mirror;
         CpuCases out{{cam.yfov_rad, float(kWidthPx) / kHeightPx, cam.znear_m, cam.zfar_m.value_or(100.0f)},
-                     render::mirror_plane(m).normalized(),
+                     plan::mirror_plane(m).normalized(),
                      {}};
         std::mt19937 rng(7u);
         std::uniform_real_distribution<float> jitter(-0.5f, 0.5f);
@@ -65,7 +65,7 @@ const CpuCases& cases() {
             const auto projection = frustum::perspective<float>(out.lens.fovy_rad, out.lens.aspect, out.lens.near_m,
                                                                 out.lens.far_m, frustum::DepthRange::ZeroToOne);
             const auto camera = frustum::compose(*projection, *frustum::look_at<float>(eye, target, {0, 1, 0}));
-            const auto rect = render::mirror_screen_rect(m, camera, kWidthPx, kHeightPx);
+            const auto rect = plan::mirror_screen_rect(m, camera, kWidthPx, kHeightPx);
             out.frames.push_back({eye, target,
                                   {float(rect->x), float(rect->y), float(rect->width), float(rect->height),
                                    float(kWidthPx), float(kHeightPx)}});
@@ -141,13 +141,13 @@ const CurvedCase& curved_case(int grid) {
     if (found != cases.end()) {
         return found->second;
     }
-    const auto mirror = render::CurvedMirror::create(*showcase().mirror, render::CapShape::Sphere, 0.3);
+    const auto mirror = plan::CurvedMirror::create(*showcase().mirror, plan::CapShape::Sphere, 0.3);
     const auto eye = frustum::eye_point(main_camera());
     CurvedCase c;
     c.far_m = std::max(glm::length(glm::dvec3(showcase().world_bounds.max - showcase().world_bounds.min)), 1.0);
     for (int j = 0; j < grid; ++j) {
         for (int i = 0; i < grid; ++i) {
-            c.targets.push_back(render::patch_target(*mirror, glm::dvec3(*eye), grid, i, j));
+            c.targets.push_back(plan::patch_target(*mirror, glm::dvec3(*eye), grid, i, j));
         }
     }
     return cases.emplace(grid, std::move(c)).first->second;
@@ -193,7 +193,7 @@ frustum::Result<frustum::VolumeFit<double>> former_fit(const frustum::VolumeTarg
 }
 
 // Every patch of a G x G cap: Newton (warm-started from the left or lower
-// neighbour, as render::plan_curved_mirror does) or the former ascent.
+// neighbour, as plan::plan_curved_mirror does) or the former ascent.
 void curved_fits(benchmark::State& state, int grid, bool newton) {
     const CurvedCase& c = curved_case(grid);
     std::vector<std::optional<glm::dvec3>> origins(c.targets.size());
@@ -272,12 +272,12 @@ void register_cpu_benchmarks() {
             ->Unit(benchmark::kMicrosecond);
         benchmark::RegisterBenchmark(("cpu/curved_plan/" + gg).c_str(),
                                      [g](benchmark::State& s) {
-                                         const auto mirror = render::CurvedMirror::create(
-                                             *showcase().mirror, render::CapShape::Sphere, 0.3);
+                                         const auto mirror = plan::CurvedMirror::create(
+                                             *showcase().mirror, plan::CapShape::Sphere, 0.3);
                                          const auto eye = frustum::eye_point(main_camera());
                                          for (auto _ : s) {
-                                             auto plan = render::plan_curved_mirror(*mirror, glm::dvec3(*eye),
-                                                                                    showcase().world_bounds, g);
+                                             auto plan = plan::plan_curved_mirror(*mirror, glm::dvec3(*eye),
+                                                                                  showcase().world_bounds, g);
                                              benchmark::DoNotOptimize(plan);
                                          }
                                      })

@@ -1,6 +1,6 @@
 // The CPU per frame of every effect (issue 34, last item): the planning the
 // renderer does on the CPU for one frame, without GL, on the showcase at
-// 640x360, each effect at its defaults (render::resolve_effects() of
+// 640x360, each effect at its defaults (plan::resolve_effects() of
 // EffectParams{}) and at its largest documented grid. Every case calls the
 // plan functions render::Renderer::draw() and its passes call per frame
 // (app/render/renderer.cpp, *_pass.cpp), in the same order, and keeps what
@@ -53,30 +53,30 @@ T must(frustum::Result<T> r, const char* what) {
 
 struct FrameSetup {
     scene::Scene scene;
-    render::EffectParams params; // resolved for kW x kH
+    plan::EffectParams params; // resolved for kW x kH
     int main_index = 0;
-    render::WorldGeometry object_geometry;
+    plan::WorldGeometry object_geometry;
 };
 
 const FrameSetup& setup() {
     static const FrameSetup s = [] {
-        FrameSetup out{showcase(), {}, 0, render::WorldGeometry::in_object_space(showcase())};
-        const render::ResolvedEffects resolved = render::resolve_effects(render::EffectParams{}, out.scene);
+        FrameSetup out{showcase(), {}, 0, plan::WorldGeometry::in_object_space(showcase())};
+        const plan::ResolvedEffects resolved = plan::resolve_effects(plan::EffectParams{}, out.scene);
         if (resolved.refused) {
             throw std::runtime_error("cpu/frame: " + *resolved.refused);
         }
         out.params = resolved.params;
-        out.main_index = must(render::find_camera(out.scene, std::nullopt), "find_camera");
-        out.object_geometry = render::WorldGeometry::in_object_space(out.scene);
+        out.main_index = must(plan::find_camera(out.scene, std::nullopt), "find_camera");
+        out.object_geometry = plan::WorldGeometry::in_object_space(out.scene);
         return out;
     }();
     return s;
 }
 
 // The camera pairs of a frame (main, overview): every row starts with them.
-render::Cameras cameras(const FrameSetup& s) { return must(render::make_cameras(s.scene, s.main_index, kW, kH), "cameras"); }
+plan::Cameras cameras(const FrameSetup& s) { return must(plan::make_cameras(s.scene, s.main_index, kW, kH), "cameras"); }
 
-render::FrustumLineStyle line_style(const scene::Bounds& bounds) { // renderer.cpp's
+plan::FrustumLineStyle line_style(const scene::Bounds& bounds) { // renderer.cpp's
     const float diagonal_m = glm::length(bounds.max - bounds.min);
     const float size_m = diagonal_m > 0.0f ? diagonal_m : 1.0f;
     return {0.02f * size_m, 2.0f * size_m};
@@ -91,8 +91,8 @@ void plain(const FrameSetup& s, benchmark::State&) {
 
 void mirror(const FrameSetup& s, benchmark::State&) {
     const auto c = cameras(s);
-    auto plan = must(render::plan_reflection(*s.scene.mirror, c.main.pair, kW, kH, s.params.mirror_method,
-                                             s.scene.world_bounds),
+    auto plan = must(plan::plan_reflection(*s.scene.mirror, c.main.pair, kW, kH, s.params.mirror_method,
+                                           s.scene.world_bounds),
                      "plan_reflection");
     benchmark::DoNotOptimize(plan);
 }
@@ -108,12 +108,12 @@ Frame tiles(int columns, int rows) {
 void frustum_view(const FrameSetup& s, benchmark::State&) {
     const auto c = cameras(s);
     const auto style = line_style(s.scene.world_bounds);
-    auto main_lines = render::frustum_lines(c.main.pair, style);
-    auto reflection = must(render::plan_reflection(*s.scene.mirror, c.main.pair, kW, kH, s.params.mirror_method,
-                                                   s.scene.world_bounds),
+    auto main_lines = plan::frustum_lines(c.main.pair, style);
+    auto reflection = must(plan::plan_reflection(*s.scene.mirror, c.main.pair, kW, kH, s.params.mirror_method,
+                                                 s.scene.world_bounds),
                            "plan_reflection");
     if (reflection) {
-        auto lines = render::frustum_lines(reflection->pair, style);
+        auto lines = plan::frustum_lines(reflection->pair, style);
         benchmark::DoNotOptimize(lines);
     }
     benchmark::DoNotOptimize(main_lines);
@@ -122,11 +122,11 @@ void frustum_view(const FrameSetup& s, benchmark::State&) {
 Frame curved(int patches) {
     return [patches](const FrameSetup& s, benchmark::State&) {
         const auto c = cameras(s);
-        const auto cap = must(render::CurvedMirror::create(*s.scene.mirror, s.params.curved.shape,
-                                                           s.params.curved.sagitta_m),
+        const auto cap = must(plan::CurvedMirror::create(*s.scene.mirror, s.params.curved.shape,
+                                                         s.params.curved.sagitta_m),
                               "CurvedMirror::create");
         const auto eye = frustum::eye_point(c.main.pair);
-        auto plan = must(render::plan_curved_mirror(cap, glm::dvec3(*eye), s.scene.world_bounds, patches),
+        auto plan = must(plan::plan_curved_mirror(cap, glm::dvec3(*eye), s.scene.world_bounds, patches),
                          "plan_curved_mirror");
         auto tile = render::curved_tile_size(cap, c.main.pair, patches, kW, kH);
         benchmark::DoNotOptimize(plan);
@@ -137,8 +137,8 @@ Frame curved(int patches) {
 Frame lens(int grid) {
     return [grid](const FrameSetup& s, benchmark::State&) {
         const auto c = cameras(s);
-        const auto l = must(render::fit_lens(c.main.pair, s.scene.lens, s.scene.world_bounds, s.params.fit,
-                                             s.params.lens_power),
+        const auto l = must(plan::fit_lens(c.main.pair, s.scene.lens, s.scene.world_bounds, s.params.fit,
+                                           s.params.lens_power),
                             "fit_lens");
         auto t = must(frustum::lens_tiles(c.main.pair, l, kW, kH, grid, grid), "lens_tiles");
         benchmark::DoNotOptimize(t);
@@ -151,14 +151,14 @@ Frame lens(int grid) {
 // every vertex tested against the denominators and the index list built
 // (batch_non_affine(); no upload).
 void nonaffine(const FrameSetup& s, benchmark::State& state) {
-    static render::SplitGeometryCache cache(s.object_geometry);
+    static plan::SplitGeometryCache cache(s.object_geometry);
     const auto c = cameras(s);
-    const render::NonAffineOptions base; // RenderOptions::nonaffine's default
-    const auto fitted = must(render::fit_non_affine(c.main.pair, s.scene.world_bounds, base, s.params.fit),
+    const plan::NonAffineOptions base; // RenderOptions::nonaffine's default
+    const auto fitted = must(plan::fit_non_affine(c.main.pair, s.scene.world_bounds, base, s.params.fit),
                              "fit_non_affine");
-    const auto slits = must(render::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
+    const auto slits = must(plan::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
                             "crossed_slits_frustum");
-    const render::SplitGeometry& split = cache.get(s.scene.instances, fitted.max_edge_m);
+    const plan::SplitGeometry& split = cache.get(s.scene.instances, fitted.max_edge_m);
     const render::NonAffineBatch batch = render::batch_non_affine(split, slits, fitted);
     benchmark::DoNotOptimize(batch.indices.data());
     state.counters["triangles"] = static_cast<double>(batch.stats.triangles);
@@ -168,13 +168,13 @@ void nonaffine(const FrameSetup& s, benchmark::State& state) {
 // placed, split and gathered again before the batch.
 void nonaffine_rebuilt(const FrameSetup& s, benchmark::State& state) {
     const auto c = cameras(s);
-    const auto fitted = must(render::fit_non_affine(c.main.pair, s.scene.world_bounds, render::NonAffineOptions{},
-                                                    s.params.fit),
+    const auto fitted = must(plan::fit_non_affine(c.main.pair, s.scene.world_bounds, plan::NonAffineOptions{},
+                                                  s.params.fit),
                              "fit_non_affine");
-    const auto slits = must(render::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
+    const auto slits = must(plan::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
                             "crossed_slits_frustum");
-    const render::SplitGeometry split =
-        render::SplitGeometry::build(s.object_geometry.placed(s.scene.instances), fitted.max_edge_m);
+    const plan::SplitGeometry split =
+        plan::SplitGeometry::build(s.object_geometry.placed(s.scene.instances), fitted.max_edge_m);
     const render::NonAffineBatch batch = render::batch_non_affine(split, slits, fitted);
     benchmark::DoNotOptimize(batch.indices.data());
     state.counters["triangles"] = static_cast<double>(batch.stats.triangles);
@@ -183,10 +183,10 @@ void nonaffine_rebuilt(const FrameSetup& s, benchmark::State& state) {
 // The non-affine row without the geometry: cameras, fit and the six planes.
 void nonaffine_planes(const FrameSetup& s, benchmark::State&) {
     const auto c = cameras(s);
-    const auto fitted = must(render::fit_non_affine(c.main.pair, s.scene.world_bounds, render::NonAffineOptions{},
-                                                    s.params.fit),
+    const auto fitted = must(plan::fit_non_affine(c.main.pair, s.scene.world_bounds, plan::NonAffineOptions{},
+                                                  s.params.fit),
                              "fit_non_affine");
-    auto slits = must(render::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
+    auto slits = must(plan::crossed_slits_frustum(c.main.pair, fitted, frustum::DepthRange::ZeroToOne),
                       "crossed_slits_frustum");
     benchmark::DoNotOptimize(slits);
 }
@@ -196,24 +196,24 @@ void nonaffine_planes(const FrameSetup& s, benchmark::State&) {
 Frame links(bool portal, int depth) {
     return [portal, depth](const FrameSetup& s, benchmark::State& state) {
         const auto c = cameras(s);
-        auto placed = must(portal ? render::place_portal_pair(c.main.pair, s.scene.world_bounds)
-                                  : render::place_facing_links(c.main.pair, s.scene.world_bounds,
-                                                               s.params.recursion_links),
+        auto placed = must(portal ? plan::place_portal_pair(c.main.pair, s.scene.world_bounds)
+                                  : plan::place_facing_links(c.main.pair, s.scene.world_bounds,
+                                                             s.params.recursion_links),
                            "place links");
         if (!portal) {
-            render::move_links(placed, {});
+            plan::move_links(placed, {});
         }
         glm::mat4 worlds[3];
-        for (const render::ViewLink& link : placed) {
-            worlds[0] = render::link_world(link, false);
-            if (link.kind == render::ViewLink::Kind::Portal) {
-                worlds[1] = render::link_world(link, true);
-                worlds[2] = render::entry_frame_world(link);
+        for (const plan::ViewLink& link : placed) {
+            worlds[0] = plan::link_world(link, false);
+            if (link.kind == plan::ViewLink::Kind::Portal) {
+                worlds[1] = plan::link_world(link, true);
+                worlds[2] = plan::entry_frame_world(link);
             }
             benchmark::DoNotOptimize(worlds);
         }
-        auto nodes = must(render::plan_view_tree(c.main.pair, placed,
-                                                 render::ViewTreeRequest{depth, kW, kH, render::ViewBounds::Tight}),
+        auto nodes = must(plan::plan_view_tree(c.main.pair, placed,
+                                               plan::ViewTreeRequest{depth, kW, kH, plan::ViewBounds::Tight}),
                           "plan_view_tree");
         state.counters["views"] = static_cast<double>(nodes.size());
         benchmark::DoNotOptimize(nodes);
@@ -224,10 +224,10 @@ Frame links(bool portal, int depth) {
 // and both eyes' camera pairs. Each eye then plans its effect at 320x360.
 void stereo(const FrameSetup& s, benchmark::State&) {
     const auto c = cameras(s);
-    render::EffectParams p = s.params;
+    plan::EffectParams p = s.params;
     p.stereo = true;
-    const auto rig = render::stereo_rig(p, c.main.pair, s.scene);
-    auto eyes = must(render::stereo_cameras(c, *rig), "stereo_cameras");
+    const auto rig = plan::stereo_rig(p, c.main.pair, s.scene);
+    auto eyes = must(plan::stereo_cameras(c, *rig), "stereo_cameras");
     benchmark::DoNotOptimize(eyes);
 }
 
@@ -237,7 +237,7 @@ struct Row {
 };
 
 std::vector<Row> rows() {
-    const render::EffectParams& d = setup().params;
+    const plan::EffectParams& d = setup().params;
     const int lens_max = std::min(128, std::min(kW, kH)); // --lens-grid 1..128, at most one tile per pixel
     const auto grid = [](int c, int r) { return std::to_string(c) + "x" + std::to_string(r); };
     return {
@@ -248,8 +248,8 @@ std::vector<Row> rows() {
         {"cpu/frame/tiles/max_" + grid(kW, kH), tiles(kW, kH)}, // --tiles: at most one tile per pixel
         {"cpu/frame/frustum/default", frustum_view},
         {"cpu/frame/curved/default_" + grid(d.curved.patches, d.curved.patches), curved(d.curved.patches)},
-        {"cpu/frame/curved/max_" + grid(render::kMaxCurvedPatches, render::kMaxCurvedPatches),
-         curved(render::kMaxCurvedPatches)},
+        {"cpu/frame/curved/max_" + grid(plan::kMaxCurvedPatches, plan::kMaxCurvedPatches),
+         curved(plan::kMaxCurvedPatches)},
         {"cpu/frame/lens/default_" + grid(d.lens_grid, d.lens_grid), lens(d.lens_grid)},
         {"cpu/frame/lens/max_" + grid(lens_max, lens_max), lens(lens_max)},
         {"cpu/frame/nonaffine/default", nonaffine},
@@ -257,8 +257,8 @@ std::vector<Row> rows() {
         {"cpu/frame/nonaffine/rebuilt", nonaffine_rebuilt},    // an instance moved: the cache rebuilt
         {"cpu/frame/portal/default", links(true, 1)},
         {"cpu/frame/recursion/default_depth" + std::to_string(d.recursion_depth), links(false, d.recursion_depth)},
-        {"cpu/frame/recursion/max_depth" + std::to_string(render::kMaxRecursionDepth),
-         links(false, render::kMaxRecursionDepth)},
+        {"cpu/frame/recursion/max_depth" + std::to_string(plan::kMaxRecursionDepth),
+         links(false, plan::kMaxRecursionDepth)},
         {"cpu/frame/stereo/default", stereo},
     };
 }

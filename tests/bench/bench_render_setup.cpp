@@ -22,7 +22,7 @@ T value_or_throw(frustum::Result<T> result, const char* what) {
 
 const scene::Camera& main_scene_camera() {
     const scene::Scene& s = showcase();
-    const int index = value_or_throw(render::find_camera(s, std::nullopt), "main camera");
+    const int index = value_or_throw(plan::find_camera(s, std::nullopt), "main camera");
     if (index < 0) {
         throw std::runtime_error("the showcase has no camera");
     }
@@ -38,8 +38,8 @@ const scene::MirrorRect& mirror() {
 
 glm::vec3 mirror_centre() { return mirror().corner + 0.5f * (mirror().a1 + mirror().a2); }
 
-double coverage_at(float distance_m, render::PixelRect* rect_out) {
-    const auto rect = render::mirror_screen_rect(mirror(), camera_at_distance(distance_m), kWidthPx, kHeightPx);
+double coverage_at(float distance_m, plan::PixelRect* rect_out) {
+    const auto rect = plan::mirror_screen_rect(mirror(), camera_at_distance(distance_m), kWidthPx, kHeightPx);
     if (!rect) {
         return 0.0;
     }
@@ -59,8 +59,8 @@ const scene::Scene& showcase() {
 
 frustum::MatrixPair<float> main_camera() {
     const auto cameras = value_or_throw(
-        render::make_cameras(showcase(), value_or_throw(render::find_camera(showcase(), std::nullopt), "camera"),
-                             kWidthPx, kHeightPx),
+        plan::make_cameras(showcase(), value_or_throw(plan::find_camera(showcase(), std::nullopt), "camera"),
+                           kWidthPx, kHeightPx),
         "cameras");
     return cameras.main.pair;
 }
@@ -92,7 +92,7 @@ MirrorCase make_mirror_case(const std::string& label, double fraction) {
     }
     // 1/1: 10% closer than the last distance at which it fills the frame.
     const float distance_m = fraction >= 1.0 ? 0.9f * near_m : near_m;
-    MirrorCase out{label, fraction, distance_m, camera_at_distance(distance_m), {}, 0.0, render::mirror_plane(mirror())};
+    MirrorCase out{label, fraction, distance_m, camera_at_distance(distance_m), {}, 0.0, plan::mirror_plane(mirror())};
     out.coverage = coverage_at(distance_m, &out.rect);
     return out;
 }

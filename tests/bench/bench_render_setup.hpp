@@ -47,7 +47,7 @@ struct MirrorCase {
     double target_fraction; // 1/16, 1/4, 1
     float distance_m;
     frustum::MatrixPair<float> camera;
-    render::PixelRect rect;    // the mirror's screen rectangle
+    plan::PixelRect rect;      // the mirror's screen rectangle
     double coverage;           // rect area / frame area
     frustum::Plane<float> plane; // the mirror plane (positive on the reflecting side)
 };

@@ -53,9 +53,9 @@ const scene::Scene& the_scene() {
     static const scene::Scene s = make_scene();
     return s;
 }
-render::Cameras cameras() { return must(render::make_cameras(the_scene(), kMainCamera, kW, kH)); }
+plan::Cameras cameras() { return must(plan::make_cameras(the_scene(), kMainCamera, kW, kH)); }
 
-render::FrustumLineStyle line_style(const scene::Bounds& bounds) { // renderer.cpp's
+plan::FrustumLineStyle line_style(const scene::Bounds& bounds) { // renderer.cpp's
     const float diagonal_m = glm::length(bounds.max - bounds.min);
     const float size_m = diagonal_m > 0.0f ? diagonal_m : 1.0f;
     return {0.02f * size_m, 2.0f * size_m};
@@ -67,8 +67,8 @@ void plain() {
 }
 void mirror() {
     const auto c = cameras();
-    auto plan = must(render::plan_reflection(*the_scene().mirror, c.main.pair, kW, kH, render::MirrorMethod::Oblique,
-                                             the_scene().world_bounds));
+    auto plan = must(plan::plan_reflection(*the_scene().mirror, c.main.pair, kW, kH, plan::MirrorMethod::Oblique,
+                                           the_scene().world_bounds));
     keep(plan);
 }
 void tiles(int columns, int rows) {
@@ -79,54 +79,54 @@ void tiles(int columns, int rows) {
 void frustum_view() {
     const auto c = cameras();
     const auto style = line_style(the_scene().world_bounds);
-    auto main_lines = render::frustum_lines(c.main.pair, style);
-    auto reflection = must(render::plan_reflection(*the_scene().mirror, c.main.pair, kW, kH,
-                                                   render::MirrorMethod::Oblique, the_scene().world_bounds));
+    auto main_lines = plan::frustum_lines(c.main.pair, style);
+    auto reflection = must(plan::plan_reflection(*the_scene().mirror, c.main.pair, kW, kH,
+                                                 plan::MirrorMethod::Oblique, the_scene().world_bounds));
     if (reflection) {
-        auto lines = render::frustum_lines(reflection->pair, style);
+        auto lines = plan::frustum_lines(reflection->pair, style);
         keep(lines);
     }
     keep(main_lines);
 }
 void curved(int patches) {
     const auto c = cameras();
-    const auto cap = must(render::CurvedMirror::create(*the_scene().mirror, render::CapShape::Sphere, kSagittaM));
+    const auto cap = must(plan::CurvedMirror::create(*the_scene().mirror, plan::CapShape::Sphere, kSagittaM));
     const auto eye = frustum::eye_point(c.main.pair);
-    auto plan = must(render::plan_curved_mirror(cap, glm::dvec3(*eye), the_scene().world_bounds, patches));
+    auto plan = must(plan::plan_curved_mirror(cap, glm::dvec3(*eye), the_scene().world_bounds, patches));
     keep(plan);
 }
 void lens(int grid) {
     const auto c = cameras();
-    const auto l = must(render::fit_lens(c.main.pair, the_scene().lens, the_scene().world_bounds, render::EffectFit{},
-                                         kLensPower));
+    const auto l = must(plan::fit_lens(c.main.pair, the_scene().lens, the_scene().world_bounds, plan::EffectFit{},
+                                       kLensPower));
     auto t = must(frustum::lens_tiles(c.main.pair, l, kW, kH, grid, grid));
     keep(t);
 }
 void links(bool portal, int depth) {
     const auto c = cameras();
     const scene::Bounds& b = the_scene().world_bounds;
-    auto placed = must(portal ? render::place_portal_pair(c.main.pair, b)
-                              : render::place_facing_links(c.main.pair, b, render::LinkSet::Mirrors));
-    if (!portal) render::move_links(placed, {});
+    auto placed = must(portal ? plan::place_portal_pair(c.main.pair, b)
+                              : plan::place_facing_links(c.main.pair, b, plan::LinkSet::Mirrors));
+    if (!portal) plan::move_links(placed, {});
     glm::mat4 worlds[3];
-    for (const render::ViewLink& link : placed) {
-        worlds[0] = render::link_world(link, false);
-        if (link.kind == render::ViewLink::Kind::Portal) {
-            worlds[1] = render::link_world(link, true);
-            worlds[2] = render::entry_frame_world(link);
+    for (const plan::ViewLink& link : placed) {
+        worlds[0] = plan::link_world(link, false);
+        if (link.kind == plan::ViewLink::Kind::Portal) {
+            worlds[1] = plan::link_world(link, true);
+            worlds[2] = plan::entry_frame_world(link);
         }
         keep(worlds);
     }
-    auto nodes = must(render::plan_view_tree(c.main.pair, placed,
-                                             render::ViewTreeRequest{depth, kW, kH, render::ViewBounds::Tight}));
+    auto nodes = must(plan::plan_view_tree(c.main.pair, placed,
+                                           plan::ViewTreeRequest{depth, kW, kH, plan::ViewBounds::Tight}));
     keep(nodes);
 }
 void stereo() {
     const auto c = cameras();
-    render::EffectParams p;
+    plan::EffectParams p;
     p.stereo = true;
-    const auto rig = render::stereo_rig(p, c.main.pair, the_scene());
-    auto eyes = must(render::stereo_cameras(c, *rig));
+    const auto rig = plan::stereo_rig(p, c.main.pair, the_scene());
+    auto eyes = must(plan::stereo_cameras(c, *rig));
     keep(eyes);
 }
 
@@ -148,12 +148,12 @@ int main(int argc, char** argv) {
     else if (op == "tiles32") frame = [] { tiles(32, 32); };
     else if (op == "frustum") frame = frustum_view;
     else if (op == "curved") frame = [] { curved(kPatches); };
-    else if (op == "curved64") frame = [] { curved(render::kMaxCurvedPatches); };
+    else if (op == "curved64") frame = [] { curved(plan::kMaxCurvedPatches); };
     else if (op == "lens") frame = [] { lens(kLensGrid); };
     else if (op == "lens128") frame = [] { lens(128); };
     else if (op == "portal") frame = [] { links(true, 1); };
     else if (op == "recursion") frame = [] { links(false, kDepth); };
-    else if (op == "recursion8") frame = [] { links(false, render::kMaxRecursionDepth); };
+    else if (op == "recursion8") frame = [] { links(false, plan::kMaxRecursionDepth); };
     else if (op == "stereo") frame = stereo;
     else fail("unknown op " + op);
     for (int i = 0; i < repeats; ++i) {

@@ -41,7 +41,7 @@ struct MirrorDiff {
     int outside = 0; // pixels elsewhere that differ
 };
 
-inline MirrorDiff mirror_diff(const image::Image& plain, const image::Image& mirror, const render::PixelRect& rect) {
+inline MirrorDiff mirror_diff(const image::Image& plain, const image::Image& mirror, const plan::PixelRect& rect) {
     MirrorDiff d;
     for (int row = 0; row < plain.height; ++row) {
         const int y = plain.height - 1 - row; // PixelRect counts from the bottom
@@ -70,27 +70,27 @@ inline void check_every_effect(const std::vector<std::filesystem::path>& files) 
             auto scene = scene::load_gltf(file.string());
             REQUIRE_MESSAGE(scene.ok(), scene.error());
             const render_test::DerivedScene derived = render_test::derive_scene(*env, *scene, kWidthPx, kHeightPx);
-            const render::Cameras& cameras = derived.cameras;
+            const plan::Cameras& cameras = derived.cameras;
 
-            std::map<render::Effect, image::Image> pictures;
-            for (render::Effect effect : render::kAllEffects) {
-                INFO(render::to_string(effect));
+            std::map<plan::Effect, image::Image> pictures;
+            for (plan::Effect effect : plan::kAllEffects) {
+                INFO(plan::to_string(effect));
                 auto picture = derived.renderer->render(effect, cameras, derived.options);
                 REQUIRE_MESSAGE(picture.ok(), picture.error());
                 const int not_sky = not_sky_pixels(*picture);
                 CHECK(not_sky >= kMinNotSkyPixels);
                 if (not_sky < kMinNotSkyPixels) {
                     render_test::save_failure("any-scene-" + file.stem().string() + "-" +
-                                                  std::string(render::to_string(effect)),
+                                                  std::string(plan::to_string(effect)),
                                               *picture, *picture);
                 }
                 pictures.emplace(effect, std::move(*picture));
             }
 
-            const auto rect = render::mirror_screen_rect(*scene->mirror, cameras.main.pair, kWidthPx, kHeightPx);
+            const auto rect = plan::mirror_screen_rect(*scene->mirror, cameras.main.pair, kWidthPx, kHeightPx);
             REQUIRE_MESSAGE(rect, "the mirror is off-screen");
-            const image::Image& plain = pictures.at(render::Effect::Plain);
-            const image::Image& mirror = pictures.at(render::Effect::Mirror);
+            const image::Image& plain = pictures.at(plan::Effect::Plain);
+            const image::Image& mirror = pictures.at(plan::Effect::Mirror);
             const MirrorDiff d = mirror_diff(plain, mirror, *rect);
             MESSAGE(file.filename().string() << ": mirror rectangle " << rect->width << "x" << rect->height << ", "
                                              << d.inside << " pixels reflect, " << d.outside << " elsewhere differ");

@@ -51,29 +51,29 @@ inline std::vector<Outcome> check_files(const std::vector<std::filesystem::path>
         auto scene = scene::load_gltf(file.string());
         REQUIRE_MESSAGE(scene.ok(), scene.error());
         const render_test::DerivedScene derived = render_test::derive_scene(*env, *scene, kWidthPx, kHeightPx);
-        const auto render = [&](render::Effect effect) {
+        const auto render = [&](plan::Effect effect) {
             auto picture = derived.renderer->render(effect, derived.cameras, derived.options);
-            REQUIRE_MESSAGE(picture.ok(), render::to_string(effect) << ": " << picture.error());
+            REQUIRE_MESSAGE(picture.ok(), plan::to_string(effect) << ": " << picture.error());
             return std::move(*picture);
         };
-        const image::Image plain = render(render::Effect::Plain);
+        const image::Image plain = render(plan::Effect::Plain);
         std::string line = file.filename().string() + ":";
-        for (render::Effect effect : {render::Effect::Mirror, render::Effect::Curved, render::Effect::Portal,
-                                      render::Effect::Recursion, render::Effect::Lens, render::Effect::NonAffine}) {
-            INFO(render::to_string(effect));
+        for (plan::Effect effect : {plan::Effect::Mirror, plan::Effect::Curved, plan::Effect::Portal,
+                                    plan::Effect::Recursion, plan::Effect::Lens, plan::Effect::NonAffine}) {
+            INFO(plan::to_string(effect));
             const image::Image picture = render(effect);
             const double changed = changed_pixels(plain, picture) / frame_px;
-            const bool warp = effect == render::Effect::Lens || effect == render::Effect::NonAffine;
+            const bool warp = effect == plan::Effect::Lens || effect == plan::Effect::NonAffine;
             const double needed = warp ? kMinWarpChangedFraction : kMinChangedFraction;
-            line += " " + std::string(render::to_string(effect)) + " " + std::to_string(changed * 100.0).substr(0, 5) + "%";
+            line += " " + std::string(plan::to_string(effect)) + " " + std::to_string(changed * 100.0).substr(0, 5) + "%";
             CHECK(changed >= needed);
             if (warp) {
                 CHECK(any_scene::not_sky_pixels(picture) >= frame_px / 100.0); // not empty: 1% not sky
             }
             if (changed < needed) {
-                short_of.push_back({file.filename().string(), std::string(render::to_string(effect)), changed});
+                short_of.push_back({file.filename().string(), std::string(plan::to_string(effect)), changed});
                 render_test::save_failure("every-effect-" + file.stem().string() + "-" +
-                                              std::string(render::to_string(effect)),
+                                              std::string(plan::to_string(effect)),
                                           plain, picture);
             }
         }

@@ -82,13 +82,13 @@ TEST_CASE("every shader the renderer composes is valid GLSL ES 3.00 for glslangV
     {
         auto renderer = render::Renderer::create(*env->context, recording, render_test::showcase());
         REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-        const render::Cameras cameras = render_test::showcase_cameras(64, 36);
+        const plan::Cameras cameras = render_test::showcase_cameras(64, 36);
         render::RenderOptions options;
         options.width_px = 64;
         options.height_px = 36;
-        options.fog = render::FogOptions{};
-        for (render::Effect effect : render::kAllEffects) {
-            CAPTURE(render::to_string(effect));
+        options.fog = plan::FogOptions{};
+        for (plan::Effect effect : plan::kAllEffects) {
+            CAPTURE(plan::to_string(effect));
             auto picture = renderer->render(effect, cameras, options);
             REQUIRE_MESSAGE(picture.ok(), picture.error());
         }

@@ -7,7 +7,7 @@
 
 namespace {
 
-constexpr render::Effect kCompared[] = {render::Effect::Plain, render::Effect::Mirror, render::Effect::Frustum};
+constexpr plan::Effect kCompared[] = {plan::Effect::Plain, plan::Effect::Mirror, plan::Effect::Frustum};
 
 void compare_images(const std::string& stem, const image::Image& a, const image::Image& b, int tolerance) {
     const auto diff = image::compare(a, b, tolerance);
@@ -32,14 +32,14 @@ TEST_CASE("EGL and OSMesa render the same images") {
         if (!r) {
             return;
         }
-        for (render::Effect effect : kCompared) {
+        for (plan::Effect effect : kCompared) {
             pictures[b].push_back(r->render(effect, cameras, render_test::options()));
         }
     }
     // Both are llvmpipe: tolerance 1 LSB per channel (rounding), no pixel
     // beyond it. Measured: identical.
     for (std::size_t i = 0; i < std::size(kCompared); ++i) {
-        compare_images(std::string("egl-vs-osmesa-") + std::string(render::to_string(kCompared[i])), pictures[0][i],
+        compare_images(std::string("egl-vs-osmesa-") + std::string(plan::to_string(kCompared[i])), pictures[0][i],
                        pictures[1][i], 1);
     }
 }
@@ -62,7 +62,7 @@ TEST_CASE("[0, 1] depth with clip control equals the [-1, 1] conversion") {
             continue;
         }
         auto o = render_test::options();
-        for (render::Effect effect : kCompared) {
+        for (plan::Effect effect : kCompared) {
             o.depth = render::DepthPath::ClipControlWhenAvailable;
             const image::Image zero_to_one = r->render(effect, cameras, o);
             o.depth = render::DepthPath::MinusOneToOne;
@@ -71,7 +71,7 @@ TEST_CASE("[0, 1] depth with clip control equals the [-1, 1] conversion") {
             // near-ties in the depth test) can differ. Tolerance 1 LSB, no
             // pixel beyond it. Measured: identical.
             compare_images(std::string("depth-") + std::string(gl::to_string(backend)) + "-" +
-                               std::string(render::to_string(effect)),
+                               std::string(plan::to_string(effect)),
                            zero_to_one, minus_one_to_one, 1);
         }
     }

@@ -47,14 +47,14 @@ TEST_CASE("BLEND primitives are drawn from back to front: three glass quads, the
     if (!r) {
         return;
     }
-    auto cameras = render::make_cameras(s, -1, kSidePx, kSidePx);
+    auto cameras = plan::make_cameras(s, -1, kSidePx, kSidePx);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     // From (0, 0, 3) down -z, 45 degrees: the quads fill the middle of the frame.
     auto projection = frustum::perspective<float>(glm::radians(45.0f), 1.0f, 0.1f, 20.0f, frustum::DepthRange::ZeroToOne);
     REQUIRE(projection.ok());
     cameras->main.pair = frustum::compose(
         *projection, frustum::RigidTransform<float>::from_rotation_translation(glm::mat3(1.0f), glm::vec3(0, 0, -3)));
-    const image::Image picture = r->render(render::Effect::Plain, *cameras, render_test::options(kSidePx, kSidePx));
+    const image::Image picture = r->render(plan::Effect::Plain, *cameras, render_test::options(kSidePx, kSidePx));
     // The centre (all three quads), and a pixel on the back quad alone: the
     // quads' right edges are 12.4 (front), 15.5 (middle) and 17.7 px (back)
     // right of the centre (half size / depth / tan 22.5 deg x 32 px).

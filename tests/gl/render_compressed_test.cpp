@@ -40,12 +40,12 @@ TEST_CASE("quantized and compressed tori render like torus.gltf") {
     if (!r) {
         return;
     }
-    const auto index = render::find_camera(*original, std::nullopt);
+    const auto index = plan::find_camera(*original, std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
-    const auto cameras = render::make_cameras(*original, *index, kWidthPx, kHeightPx);
+    const auto cameras = plan::make_cameras(*original, *index, kWidthPx, kHeightPx);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     const render::RenderOptions o = render_test::options(kWidthPx, kHeightPx);
-    const image::Image reference = r->render(render::Effect::Plain, *cameras, o);
+    const image::Image reference = r->render(plan::Effect::Plain, *cameras, o);
     support::TempDir dir;
     for (const compressed_models::Variant& variant : compressed_models::variants()) {
         const std::string file = variant.file;
@@ -58,7 +58,7 @@ TEST_CASE("quantized and compressed tori render like torus.gltf") {
         REQUIRE_MESSAGE(compressed.ok(), compressed.error());
         auto rc = render_test::make_any_renderer(*compressed);
         REQUIRE(rc);
-        const image::Image picture = rc->render(render::Effect::Plain, *cameras, o);
+        const image::Image picture = rc->render(plan::Effect::Plain, *cameras, o);
         const auto diff = image::compare(picture, reference, kToleranceLsb);
         REQUIRE_MESSAGE(diff.ok(), diff.error());
         MESSAGE(file << ": " << diff->pixels_over << " of " << diff->pixel_count << " pixels over " << kToleranceLsb

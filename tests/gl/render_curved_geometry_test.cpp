@@ -17,8 +17,8 @@ namespace {
 
 const scene::MirrorRect& showcase_mirror() { return *render_test::showcase().mirror; }
 
-render::CurvedMirror cap(double sagitta_m, render::CapShape shape = render::CapShape::Sphere) {
-    auto mirror = render::CurvedMirror::create(showcase_mirror(), shape, sagitta_m);
+plan::CurvedMirror cap(double sagitta_m, plan::CapShape shape = plan::CapShape::Sphere) {
+    auto mirror = plan::CurvedMirror::create(showcase_mirror(), shape, sagitta_m);
     REQUIRE_MESSAGE(mirror.ok(), mirror.error());
     return *mirror;
 }
@@ -30,8 +30,8 @@ glm::dvec3 main_eye() {
     return glm::dvec3(*eye);
 }
 
-render::CurvedPlan plan(const render::CurvedMirror& mirror, int grid) {
-    auto planned = render::plan_curved_mirror(mirror, main_eye(), render_test::showcase().world_bounds, grid);
+plan::CurvedPlan cap_plan(const plan::CurvedMirror& mirror, int grid) {
+    auto planned = plan::plan_curved_mirror(mirror, main_eye(), render_test::showcase().world_bounds, grid);
     REQUIRE_MESSAGE(planned.ok(), planned.error());
     REQUIRE(planned->has_value());
     return **planned;
@@ -77,9 +77,9 @@ TEST_CASE("a ray aimed at a cap point meets the cap there, flat or curved") {
     const glm::dvec3 eye = main_eye();
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(0.02, 0.98);
-    for (const auto shape : {render::CapShape::Sphere, render::CapShape::Cylinder}) {
+    for (const auto shape : {plan::CapShape::Sphere, plan::CapShape::Cylinder}) {
         for (const double sagitta : {0.0, 1e-4, 0.3, 0.6}) {
-            INFO(render::to_string(shape) << " sagitta " << sagitta);
+            INFO(plan::to_string(shape) << " sagitta " << sagitta);
             const auto mirror = cap(sagitta, shape);
             for (int trial = 0; trial < 50; ++trial) {
                 const double v = u(rng), u_coord = u(rng); // one draw each, v first (as always)
@@ -98,8 +98,8 @@ TEST_CASE("a ray aimed at a cap point meets the cap there, flat or curved") {
 }
 
 TEST_CASE("a cap with a bad sagitta is rejected") {
-    CHECK_FALSE(render::CurvedMirror::create(showcase_mirror(), render::CapShape::Sphere, -0.1).ok());
-    const auto too_deep = render::CurvedMirror::create(showcase_mirror(), render::CapShape::Sphere, 1.0);
+    CHECK_FALSE(plan::CurvedMirror::create(showcase_mirror(), plan::CapShape::Sphere, -0.1).ok());
+    const auto too_deep = plan::CurvedMirror::create(showcase_mirror(), plan::CapShape::Sphere, 1.0);
     REQUIRE_FALSE(too_deep.ok());
     CHECK(too_deep.error() == "render::CurvedMirror::create(): sagitta must be in [0, 0.901388] m (half the "
                               "distance from the centre to the rim), got 1.000000");
@@ -111,7 +111,7 @@ TEST_CASE("a flat cap's patch targets are exact frustums from the reflected eye:
     const glm::dvec3 n = mirror.base_normal();
     const glm::dvec3 reflected_eye = eye - 2.0 * glm::dot(eye - mirror.base_center(), n) * n; // eq. 30
     for (int grid : {1, 3, 8}) {
-        const auto p = plan(mirror, grid);
+        const auto p = cap_plan(mirror, grid);
         CHECK(p.failed == 0);
         for (const auto& patch : p.patches) {
             CHECK(glm::length(patch.origin - reflected_eye) < 1e-6);
@@ -126,11 +126,11 @@ TEST_CASE("the volume gradient matches finite differences on curved patch target
     const glm::dvec3 eye = main_eye();
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> u(-0.5, 0.5);
-    for (const auto shape : {render::CapShape::Sphere, render::CapShape::Cylinder}) {
+    for (const auto shape : {plan::CapShape::Sphere, plan::CapShape::Cylinder}) {
         const auto mirror = cap(0.3, shape);
-        const auto p = plan(mirror, 4);
+        const auto p = cap_plan(mirror, 4);
         for (const auto& patch : p.patches) {
-            const auto target = render::patch_target(mirror, eye, 4, patch.i, patch.j);
+            const auto target = plan::patch_target(mirror, eye, 4, patch.i, patch.j);
             const double dz = u(rng), dy = u(rng), dx = u(rng); // one draw each, z first (as always)
             const glm::dvec3 at = patch.origin + glm::dvec3(dx, dy, dz);
             glm::dvec3 gradient;
@@ -155,16 +155,16 @@ TEST_CASE("every patch of the showcase's cap gets a valid frustum with a high ob
     // patches (the objective is flat along the patch's axis), with O then
     // within a few cm of where 5000 iterations take it.
     struct Case {
-        render::CapShape shape;
+        plan::CapShape shape;
         int grid;
         double least_f;
     };
-    for (const Case c : {Case{render::CapShape::Sphere, 1, 3.999}, Case{render::CapShape::Sphere, 2, 3.999},
-                         Case{render::CapShape::Sphere, 4, 3.999}, Case{render::CapShape::Sphere, 8, 3.999},
-                         Case{render::CapShape::Sphere, 16, 3.999}, Case{render::CapShape::Cylinder, 4, 3.96},
-                         Case{render::CapShape::Cylinder, 8, 3.98}, Case{render::CapShape::Cylinder, 16, 3.99}}) {
-        INFO(render::to_string(c.shape) << " G = " << c.grid);
-        const auto p = plan(cap(0.3, c.shape), c.grid);
+    for (const Case c : {Case{plan::CapShape::Sphere, 1, 3.999}, Case{plan::CapShape::Sphere, 2, 3.999},
+                         Case{plan::CapShape::Sphere, 4, 3.999}, Case{plan::CapShape::Sphere, 8, 3.999},
+                         Case{plan::CapShape::Sphere, 16, 3.999}, Case{plan::CapShape::Cylinder, 4, 3.96},
+                         Case{plan::CapShape::Cylinder, 8, 3.98}, Case{plan::CapShape::Cylinder, 16, 3.99}}) {
+        INFO(plan::to_string(c.shape) << " G = " << c.grid);
+        const auto p = cap_plan(cap(0.3, c.shape), c.grid);
         REQUIRE(p.failed == 0);
         double worst = 4.0;
         for (const auto& patch : p.patches) {
@@ -184,14 +184,14 @@ TEST_CASE("every patch of the showcase's cap gets a valid frustum with a high ob
 TEST_CASE("a patch whose reflected volume is too wide for one frustum fails, and more patches fix it") {
     // Sagitta 0.9 m as one patch: the rim tilts by 53 degrees and the
     // reflected side planes open by more than 180 degrees (F = 2.94).
-    const auto deep = plan(cap(0.9), 1);
+    const auto deep = cap_plan(cap(0.9), 1);
     CHECK(deep.failed == 1);
     CHECK_FALSE(deep.patches[0].pair.has_value());
     CHECK(deep.patches[0].error.find("too wide for one frustum") != std::string::npos);
-    CHECK(plan(cap(0.9), 4).failed == 0);
+    CHECK(cap_plan(cap(0.9), 4).failed == 0);
     // The cylinder as one patch (F = 3.68) and as 2 x 2 (two patches fail).
-    CHECK(plan(cap(0.3, render::CapShape::Cylinder), 1).failed == 1);
-    CHECK(plan(cap(0.3, render::CapShape::Cylinder), 4).failed == 0);
+    CHECK(cap_plan(cap(0.3, plan::CapShape::Cylinder), 1).failed == 1);
+    CHECK(cap_plan(cap(0.3, plan::CapShape::Cylinder), 4).failed == 0);
 }
 
 TEST_CASE("the looked-up ray approaches the exactly reflected ray as the patches shrink") {
@@ -200,15 +200,15 @@ TEST_CASE("the looked-up ray approaches the exactly reflected ray as the patches
     // 3.40, 1.17, 0.37, 0.149, 0.072 degrees for G = 1, 2, 4, 8, 16.
     const auto cameras = render_test::showcase_cameras();
     const auto flat = cap(0.0);
-    const auto flat_error = render::lookup_ray_error(flat, plan(flat, 4), cameras.main.pair, render_test::kWidthPx,
-                                                     render_test::kHeightPx);
+    const auto flat_error = reference::lookup_ray_error(flat, cap_plan(flat, 4), cameras.main.pair,
+                                                        render_test::kWidthPx, render_test::kHeightPx);
     CHECK(flat_error.pixels > 1000);
     CHECK(flat_error.max_deg < 1e-4); // O is the reflected eye: exact
     const auto mirror = cap(0.3);
     double previous = 180.0;
     for (int grid : {1, 2, 4, 8, 16}) {
-        const auto e = render::lookup_ray_error(mirror, plan(mirror, grid), cameras.main.pair, render_test::kWidthPx,
-                                                render_test::kHeightPx);
+        const auto e = reference::lookup_ray_error(mirror, cap_plan(mirror, grid), cameras.main.pair,
+                                                   render_test::kWidthPx, render_test::kHeightPx);
         MESSAGE("G = " << grid << ": mean " << e.mean_deg << " max " << e.max_deg << " degrees");
         CHECK(e.pixels > flat_error.pixels); // the cap bulges towards the camera
         CHECK(e.mean_deg < 0.6 * previous);
@@ -222,11 +222,11 @@ TEST_CASE("the looked-up ray approaches the exactly reflected ray as the patches
 
 TEST_CASE("patch frustums are unmirrored views: a triangle facing O stays counter-clockwise") {
     const auto mirror = cap(0.3);
-    const auto p = plan(mirror, 4);
+    const auto p = cap_plan(mirror, 4);
     for (const auto& patch : p.patches) {
         const frustum::MatrixPair<double> pair = patch.pair->cast<double>();
         // A small triangle on the patch's axis, counter-clockwise seen from O.
-        const auto target = render::patch_target(mirror, main_eye(), 4, patch.i, patch.j);
+        const auto target = plan::patch_target(mirror, main_eye(), 4, patch.i, patch.j);
         glm::dvec3 centroid(0.0);
         for (const auto& x : target.near_points) centroid += 0.25 * x;
         const glm::dvec3 forward = glm::normalize(centroid - patch.origin);
@@ -241,17 +241,17 @@ TEST_CASE("patch frustums are unmirrored views: a triangle facing O stays counte
 
 TEST_CASE("the near points are the patch corners (exactly for the cylinder, within 1e-3 of the patch for the sphere)") {
     const glm::dvec3 eye = main_eye();
-    for (const auto shape : {render::CapShape::Sphere, render::CapShape::Cylinder}) {
+    for (const auto shape : {plan::CapShape::Sphere, plan::CapShape::Cylinder}) {
         const auto mirror = cap(0.3, shape);
         for (int grid : {1, 4}) {
             for (int j = 0; j < grid; ++j) {
                 for (int i = 0; i < grid; ++i) {
-                    const auto target = render::patch_target(mirror, eye, grid, i, j);
+                    const auto target = plan::patch_target(mirror, eye, grid, i, j);
                     const double g = grid;
                     const glm::dvec3 corner = mirror.at((i + 1) / g, (j + 1) / g).position; // X0: top-left from O
                     const double size = glm::length(target.near_points[2] - target.near_points[0]);
                     const double moved = glm::length(target.near_points[0] - corner);
-                    CHECK(moved <= (shape == render::CapShape::Cylinder ? 1e-12 : 1e-3) * size);
+                    CHECK(moved <= (shape == plan::CapShape::Cylinder ? 1e-12 : 1e-3) * size);
                 }
             }
         }

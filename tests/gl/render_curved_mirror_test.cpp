@@ -16,10 +16,10 @@ render::RenderOptions curved_options(int patches, float sagitta_m) {
 }
 
 // The cap's visible pixels: the composite with tint 0 paints exactly them black.
-render_test::Mask curved_mask(const render_test::RenderEnvironment& r, const render::Cameras& cameras,
+render_test::Mask curved_mask(const render_test::RenderEnvironment& r, const plan::Cameras& cameras,
                               render::RenderOptions o) {
     o.mirror_tint = glm::vec3(0.0f);
-    const image::Image black = r.render(render::Effect::Curved, cameras, o);
+    const image::Image black = r.render(plan::Effect::Curved, cameras, o);
     render_test::Mask mask(static_cast<std::size_t>(black.width * black.height));
     for (int y = 0; y < black.height; ++y) {
         for (int x = 0; x < black.width; ++x) {
@@ -30,11 +30,11 @@ render_test::Mask curved_mask(const render_test::RenderEnvironment& r, const ren
     return mask;
 }
 
-render::TracedFrame trace(const render::Cameras& cameras, float sagitta_m) {
-    auto mirror = render::CurvedMirror::create(*render_test::showcase().mirror, render::CapShape::Sphere, sagitta_m);
+reference::TracedFrame trace(const plan::Cameras& cameras, float sagitta_m) {
+    auto mirror = plan::CurvedMirror::create(*render_test::showcase().mirror, plan::CapShape::Sphere, sagitta_m);
     REQUIRE_MESSAGE(mirror.ok(), mirror.error());
-    auto traced = render::trace_curved_frame(render_test::showcase(), *mirror, cameras.main.pair,
-                                             render_test::kWidthPx, render_test::kHeightPx, {});
+    auto traced = reference::trace_curved_frame(render_test::showcase(), *mirror, cameras.main.pair,
+                                                render_test::kWidthPx, render_test::kHeightPx, {});
     REQUIRE_MESSAGE(traced.ok(), traced.error());
     return std::move(*traced);
 }
@@ -47,8 +47,8 @@ TEST_CASE("a flat cap (sagitta 0) reproduces the planar mirror rectangle") {
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     auto planar = render_test::options();
-    planar.mirror_method = render::MirrorMethod::Rectangle;
-    const image::Image rectangle = r->render(render::Effect::Mirror, cameras, planar);
+    planar.mirror_method = plan::MirrorMethod::Rectangle;
+    const image::Image rectangle = r->render(plan::Effect::Mirror, cameras, planar);
     const auto planar_mask = render_test::mirror_mask(*r, cameras, planar);
     for (int patches : {1, 4, 16}) {
         INFO("G = " << patches);
@@ -56,7 +56,7 @@ TEST_CASE("a flat cap (sagitta 0) reproduces the planar mirror rectangle") {
         const auto mask = curved_mask(*r, cameras, o);
         // The same quad (the cap mesh lies in the mirror's plane): the same pixels.
         CHECK(render_test::count(render_test::both(mask, planar_mask)) >= render_test::count(planar_mask) * 99 / 100);
-        const image::Image flat = r->render(render::Effect::Curved, cameras, o);
+        const image::Image flat = r->render(plan::Effect::Curved, cameras, o);
         // Every patch frustum is the rectangle method's frustum restricted to
         // the patch (same origin, the reflected eye; same near plane), so
         // only the texture layout differs. G = 1: the same texture size, so
@@ -89,8 +89,8 @@ TEST_CASE("the curved mirror's error against the ray-traced reflection falls wit
         const auto o = curved_options(patches, 0.3f);
         const auto mask = render_test::both(curved_mask(*r, cameras, o), traced.on_mirror);
         CHECK(render_test::count(mask) >= traced.mirror_pixels * 95 / 100);
-        const image::Image picture = r->render(render::Effect::Curved, cameras, o);
-        const auto e = render::compare_on_mask(picture, traced.picture, mask, 24);
+        const image::Image picture = r->render(plan::Effect::Curved, cameras, o);
+        const auto e = reference::compare_on_mask(picture, traced.picture, mask, 24);
         MESSAGE("G = " << patches << ": " << e.pixels << " pixels, mean " << e.mean_abs << ", max " << e.max_abs
                        << ", over 24 LSB " << 100.0 * e.fraction_over << "%");
         CHECK(e.mean_abs < previous);
@@ -115,7 +115,7 @@ TEST_CASE("the red marker behind the mirror never shows in the curved mirror") {
             const auto o = curved_options(patches, sagitta_m);
             const auto mask = curved_mask(*r, cameras, o);
             REQUIRE(render_test::count(mask) > 500);
-            const image::Image picture = r->render(render::Effect::Curved, cameras, o);
+            const image::Image picture = r->render(plan::Effect::Curved, cameras, o);
             CHECK(render_test::count_red(picture, mask) == 0);
             CHECK(render_test::count_not_sky(picture, mask) > render_test::count(mask) / 4);
         }
@@ -130,7 +130,7 @@ TEST_CASE("a patch without a frustum shows the clear colour") {
     const auto o = curved_options(1, 0.9f);
     const auto mask = curved_mask(*r, cameras, o);
     REQUIRE(render_test::count(mask) > 500);
-    const image::Image picture = r->render(render::Effect::Curved, cameras, o);
+    const image::Image picture = r->render(plan::Effect::Curved, cameras, o);
     CHECK(render_test::count_not_sky(picture, mask) == 0);
 }
 
@@ -140,7 +140,7 @@ TEST_CASE("no GL object outlives a renderer that drew the curved mirror") {
         RENDER_TEST_ANY_RENDERER(r);
         const auto cameras = render_test::showcase_cameras();
         for (int patches : {1, 7, 16}) {
-            r->render(render::Effect::Curved, cameras, curved_options(patches, 0.3f));
+            r->render(plan::Effect::Curved, cameras, curved_options(patches, 0.3f));
         }
     }
     CHECK(gl::live_object_count() == before);

@@ -31,19 +31,19 @@ constexpr int kHeightPx = 90;
 // it. Pixels differing by more than kToleranceLsb, measured per scene and
 // effect (llvmpipe, 160x90; the lens 119 to 186 as its tiles changed):
 constexpr int kToleranceLsb = 24;
-using Measured = std::map<render::Effect, int>;
+using Measured = std::map<plan::Effect, int>;
 const Measured kShowcaseMeasuredPx = {
-    {render::Effect::Plain, 16},  {render::Effect::Mirror, 16},    {render::Effect::Tiles, 13},
-    {render::Effect::Frustum, 117}, {render::Effect::Curved, 16},  {render::Effect::Lens, 186},
-    {render::Effect::NonAffine, 11}, {render::Effect::Portal, 37}, {render::Effect::Recursion, 82}};
+    {plan::Effect::Plain, 16},  {plan::Effect::Mirror, 16},    {plan::Effect::Tiles, 13},
+    {plan::Effect::Frustum, 117}, {plan::Effect::Curved, 16},  {plan::Effect::Lens, 186},
+    {plan::Effect::NonAffine, 11}, {plan::Effect::Portal, 37}, {plan::Effect::Recursion, 82}};
 const Measured kBoxMeasuredPx = {
-    {render::Effect::Plain, 1},    {render::Effect::Mirror, 1},   {render::Effect::Tiles, 7},
-    {render::Effect::Frustum, 24}, {render::Effect::Curved, 3},   {render::Effect::Lens, 2},
-    {render::Effect::NonAffine, 7}, {render::Effect::Portal, 12}, {render::Effect::Recursion, 7}};
+    {plan::Effect::Plain, 1},    {plan::Effect::Mirror, 1},   {plan::Effect::Tiles, 7},
+    {plan::Effect::Frustum, 24}, {plan::Effect::Curved, 3},   {plan::Effect::Lens, 2},
+    {plan::Effect::NonAffine, 7}, {plan::Effect::Portal, 12}, {plan::Effect::Recursion, 7}};
 
 // The bound: what was measured plus a quarter, at least 4 pixels (another
 // rasterizer's rounding of a few edge pixels).
-int max_different_px(const Measured& measured, render::Effect effect) {
+int max_different_px(const Measured& measured, plan::Effect effect) {
     const int px = measured.at(effect);
     return px + std::max(4, (px + 3) / 4);
 }
@@ -67,11 +67,11 @@ void move_scene(scene::Scene& s, const glm::vec3& offset_m) {
 }
 
 // Every effect of `scene` with its derived camera and parameters.
-std::map<render::Effect, image::Image> render_all(const gl_test::Environment& env, scene::Scene scene) {
+std::map<plan::Effect, image::Image> render_all(const gl_test::Environment& env, scene::Scene scene) {
     const render_test::DerivedScene derived = render_test::derive_scene(env, scene, kWidthPx, kHeightPx);
-    std::map<render::Effect, image::Image> pictures;
-    for (render::Effect effect : render::kAllEffects) {
-        INFO(render::to_string(effect));
+    std::map<plan::Effect, image::Image> pictures;
+    for (plan::Effect effect : plan::kAllEffects) {
+        INFO(plan::to_string(effect));
         auto picture = derived.renderer->render(effect, derived.cameras, derived.options);
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         pictures.emplace(effect, std::move(*picture));
@@ -103,17 +103,17 @@ TEST_CASE("every effect 5 km from the origin looks as it does at the origin") {
         move_scene(moved, glm::vec3(5000.0f, 120.0f, -2000.0f));
         const auto at_origin = render_all(*env, *scene);
         const auto far_out = render_all(*env, moved);
-        for (render::Effect effect : render::kAllEffects) {
-            INFO(render::to_string(effect));
+        for (plan::Effect effect : plan::kAllEffects) {
+            INFO(plan::to_string(effect));
             const int max_different = max_different_px(c.measured_px, effect);
             const auto diff = image::compare(far_out.at(effect), at_origin.at(effect), kToleranceLsb);
             REQUIRE(diff.ok());
-            MESSAGE(file.filename().string() << " " << render::to_string(effect) << ": " << diff->pixels_over
+            MESSAGE(file.filename().string() << " " << plan::to_string(effect) << ": " << diff->pixels_over
                                              << " of " << kWidthPx * kHeightPx << " pixels differ");
             CHECK(diff->pixels_over <= max_different);
             if (diff->pixels_over > max_different) {
                 render_test::save_failure("far-from-origin-" + file.stem().string() + "-" +
-                                              std::string(render::to_string(effect)),
+                                              std::string(plan::to_string(effect)),
                                           at_origin.at(effect), far_out.at(effect));
             }
         }
@@ -143,13 +143,13 @@ void write_georeferenced(const std::filesystem::path& file, const glm::dvec3& of
 // same coordinates relative to its rounded centre, so only float rounding of
 // the sub-metre remainder differs.
 const Measured kShowcaseGeoMeasuredPx = {
-    {render::Effect::Plain, 0},   {render::Effect::Mirror, 0},    {render::Effect::Tiles, 0},
-    {render::Effect::Frustum, 0}, {render::Effect::Curved, 0},    {render::Effect::Lens, 1},
-    {render::Effect::NonAffine, 0}, {render::Effect::Portal, 0}, {render::Effect::Recursion, 1}};
+    {plan::Effect::Plain, 0},   {plan::Effect::Mirror, 0},    {plan::Effect::Tiles, 0},
+    {plan::Effect::Frustum, 0}, {plan::Effect::Curved, 0},    {plan::Effect::Lens, 1},
+    {plan::Effect::NonAffine, 0}, {plan::Effect::Portal, 0}, {plan::Effect::Recursion, 1}};
 const Measured kBoxGeoMeasuredPx = {
-    {render::Effect::Plain, 0},   {render::Effect::Mirror, 0},    {render::Effect::Tiles, 0},
-    {render::Effect::Frustum, 0}, {render::Effect::Curved, 0},    {render::Effect::Lens, 0},
-    {render::Effect::NonAffine, 0}, {render::Effect::Portal, 0}, {render::Effect::Recursion, 0}};
+    {plan::Effect::Plain, 0},   {plan::Effect::Mirror, 0},    {plan::Effect::Tiles, 0},
+    {plan::Effect::Frustum, 0}, {plan::Effect::Curved, 0},    {plan::Effect::Lens, 0},
+    {plan::Effect::NonAffine, 0}, {plan::Effect::Portal, 0}, {plan::Effect::Recursion, 0}};
 
 } // namespace
 
@@ -186,12 +186,12 @@ TEST_CASE("every effect at UTM and ECEF coordinates looks as it does at the orig
             CHECK(moved->origin_m == glm::round(offset_m + centre_m));
             CHECK(glm::length(glm::dvec3(moved->world_bounds.max)) < 1000.0); // the GPU sees small numbers
             const auto far_out = render_all(*env, *moved);
-            for (render::Effect effect : render::kAllEffects) {
-                INFO(render::to_string(effect));
+            for (plan::Effect effect : plan::kAllEffects) {
+                INFO(plan::to_string(effect));
                 const int max_different = max_different_px(c.measured_px, effect);
                 const auto diff = image::compare(far_out.at(effect), at_origin.at(effect), kToleranceLsb);
                 REQUIRE(diff.ok());
-                MESSAGE(c.file.filename().string() << " " << where.str() << " " << render::to_string(effect) << ": "
+                MESSAGE(c.file.filename().string() << " " << where.str() << " " << plan::to_string(effect) << ": "
                                                    << diff->pixels_over << " of " << kWidthPx * kHeightPx
                                                    << " pixels differ");
                 CHECK(diff->pixels_over <= max_different);

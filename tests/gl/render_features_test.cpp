@@ -23,10 +23,10 @@ scene::Scene load_feature(const std::string& name) {
     return std::move(*loaded);
 }
 
-render::Cameras cameras_of(const scene::Scene& s, int width_px, int height_px) {
-    const auto index = render::find_camera(s, std::nullopt);
+plan::Cameras cameras_of(const scene::Scene& s, int width_px, int height_px) {
+    const auto index = plan::find_camera(s, std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
-    auto cameras = render::make_cameras(s, *index, width_px, height_px);
+    auto cameras = plan::make_cameras(s, *index, width_px, height_px);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     return std::move(*cameras);
 }
@@ -45,7 +45,7 @@ Picture render_feature(const std::string& name, render::RenderOptions o = render
     const scene::Scene s = load_feature(name);
     auto r = render_test::make_any_renderer(s);
     REQUIRE(r);
-    return {r->render(render::Effect::Plain, cameras_of(s, o.width_px, o.height_px), o)};
+    return {r->render(plan::Effect::Plain, cameras_of(s, o.width_px, o.height_px), o)};
 }
 
 std::uint8_t srgb_byte(float linear) {
@@ -149,8 +149,8 @@ TEST_CASE("alphaMode BLEND shows what lies behind (drawn after the opaque), MASK
     REQUIRE(r);
     const auto o = render_test::options(kSidePx, kSidePx);
     const auto cameras = cameras_of(s, kSidePx, kSidePx);
-    const auto diff = image::compare(r->render(render::Effect::Plain, cameras, o),
-                                     r->render(render::Effect::Tiles, cameras, o), 2);
+    const auto diff = image::compare(r->render(plan::Effect::Plain, cameras, o),
+                                     r->render(plan::Effect::Tiles, cameras, o), 2);
     REQUIRE_MESSAGE(diff.ok(), diff.error());
     CHECK(diff->pixels_over == 0);
 }
@@ -191,9 +191,9 @@ TEST_CASE("the showcase's lens disc is glass in every effect that draws it") {
     REQUIRE((r_glass && r_opaque && r_hidden));
     const auto cameras = render_test::showcase_cameras();
     const auto o = render_test::options();
-    for (render::Effect effect : {render::Effect::Plain, render::Effect::Mirror, render::Effect::Tiles,
-                                  render::Effect::Curved, render::Effect::NonAffine}) {
-        CAPTURE(render::to_string(effect));
+    for (plan::Effect effect : {plan::Effect::Plain, plan::Effect::Mirror, plan::Effect::Tiles,
+                                plan::Effect::Curved, plan::Effect::NonAffine}) {
+        CAPTURE(plan::to_string(effect));
         const image::Image g = r_glass->render(effect, cameras, o);
         const image::Image a = r_opaque->render(effect, cameras, o);
         const image::Image b = r_hidden->render(effect, cameras, o);
@@ -213,7 +213,7 @@ TEST_CASE("the showcase's lens disc is glass in every effect that draws it") {
                 between += inside ? 1 : 0;
             }
         }
-        MESSAGE(render::to_string(effect) << ": " << between << " of " << disc_pixels << " disc pixels are glass");
+        MESSAGE(plan::to_string(effect) << ": " << between << " of " << disc_pixels << " disc pixels are glass");
         CHECK(disc_pixels > 50); // measured: 1368 plain, 78 nonaffine (the slits squeeze it)
         CHECK(between >= disc_pixels * 9 / 10);
     }

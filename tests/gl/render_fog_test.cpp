@@ -20,7 +20,7 @@ namespace {
 // The reference: the mirrored geometry from the real camera, fogged by the
 // distance of each virtual point from the real eye (= the length of the
 // reflected ray), decoded with the camera's own pair.
-image::Image fogged_mirrored_geometry(const render_test::RenderEnvironment& r, const render::Cameras& cameras,
+image::Image fogged_mirrored_geometry(const render_test::RenderEnvironment& r, const plan::Cameras& cameras,
                                       render::DepthPath path, const render::FogParams& fog) {
     const render::DepthPolicy depth = render_test::apply_depth_policy(r, path);
     const gl::OffscreenTarget target = render_test::draw_mirrored_geometry(r, cameras, depth);
@@ -92,7 +92,7 @@ TEST_CASE("the main view's fog is the fog of the CPU's distance along each pixel
     if (!r) {
         return;
     }
-    auto cameras = render::make_cameras(s, -1, kFloorW, kFloorH);
+    auto cameras = plan::make_cameras(s, -1, kFloorW, kFloorH);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     cameras->main.pair = floor_camera();
     const auto eye = frustum::eye_point(cameras->main.pair);
@@ -101,12 +101,12 @@ TEST_CASE("the main view's fog is the fog of the CPU's distance along each pixel
         INFO("GPU depth range " << frustum::to_string(r->renderer->gpu_depth_range(path)));
         auto o = render_test::options(kFloorW, kFloorH);
         o.depth = path;
-        const image::Image plain = r->render(render::Effect::Plain, *cameras, o);
-        render::FogOptions fog_options;
+        const image::Image plain = r->render(plan::Effect::Plain, *cameras, o);
+        plan::FogOptions fog_options;
         fog_options.density_per_m = kFloorDensityPerM;
         fog_options.start_m = 0.5f;
         o.fog = fog_options;
-        const image::Image fogged = r->render(render::Effect::Plain, *cameras, o);
+        const image::Image fogged = r->render(plan::Effect::Plain, *cameras, o);
         const render::FogParams fog = render::fit_fog(fog_options, s.world_bounds, render::kClearColor);
 
         // Expected: the plain pixel blended towards the fog colour by
@@ -152,17 +152,17 @@ TEST_CASE("the fogged reflection is the fogged mirrored scene; decoded without t
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     REQUIRE(render_test::count(mask) > 500);
     const render::FogParams fog =
-        render::fit_fog(render::FogOptions{}, render_test::showcase().world_bounds, render::kClearColor);
+        render::fit_fog(plan::FogOptions{}, render_test::showcase().world_bounds, render::kClearColor);
     for (auto path : {render::DepthPath::ClipControlWhenAvailable, render::DepthPath::MinusOneToOne}) {
         const auto range = r->renderer->gpu_depth_range(path);
         INFO("GPU depth range " << frustum::to_string(range));
         auto o = render_test::options();
         o.depth = path;
-        const image::Image plain_mirror = r->render(render::Effect::Mirror, cameras, o);
-        o.fog = render::FogOptions{};
-        const image::Image fogged = r->render(render::Effect::Mirror, cameras, o);
+        const image::Image plain_mirror = r->render(plan::Effect::Mirror, cameras, o);
+        o.fog = plan::FogOptions{};
+        const image::Image fogged = r->render(plan::Effect::Mirror, cameras, o);
         o.fog->decode_reflection_unclipped = true;
-        const image::Image unclipped = r->render(render::Effect::Mirror, cameras, o);
+        const image::Image unclipped = r->render(plan::Effect::Mirror, cameras, o);
         const image::Image reference = fogged_mirrored_geometry(*r, cameras, path, fog);
 
         // The fog is there: the fogged mirror is far from the unfogged one

@@ -38,7 +38,7 @@ TEST_CASE("the frustum view's yellow edges pass through the main frustum's corne
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto o = render_test::options();
-    const image::Image picture = r->render(render::Effect::Frustum, cameras, o);
+    const image::Image picture = r->render(plan::Effect::Frustum, cameras, o);
     const glm::mat4 inverse = cameras.main.pair.inverse();
     const glm::mat4 overview = cameras.overview.pair.matrix();
     const float z_near = frustum::clip_z_near<float>(cameras.main.pair.depth());

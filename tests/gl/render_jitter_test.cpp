@@ -61,15 +61,15 @@ TEST_SUITE("gl") {
 TEST_CASE("jitter: the mean of 8 Halton(2,3)-jittered renders matches a 4x4 supersampled render") {
     RENDER_TEST_ANY_RENDERER(r);
     constexpr int kW = render_test::kWidthPx, kH = render_test::kHeightPx;
-    const render::Cameras cameras = render_test::showcase_cameras(kW, kH);
-    for (const render::Effect effect : {render::Effect::Plain, render::Effect::Mirror}) {
-        INFO("effect " << render::to_string(effect));
+    const plan::Cameras cameras = render_test::showcase_cameras(kW, kH);
+    for (const plan::Effect effect : {plan::Effect::Plain, plan::Effect::Mirror}) {
+        INFO("effect " << plan::to_string(effect));
         std::vector<image::Image> jittered;
         for (int s = 1; s <= 8; ++s) {
             const auto offset = frustum::halton_jitter_px<float>(s);
             auto pair = frustum::jitter(cameras.main.pair, offset.x, offset.y, float(kW), float(kH));
             REQUIRE_MESSAGE(pair.ok(), pair.error());
-            render::Cameras shifted = cameras;
+            plan::Cameras shifted = cameras;
             shifted.main.pair = *pair; // the reflection is then mirror(jitter(camera))
             jittered.push_back(r->render(effect, shifted, render_test::options(kW, kH)));
         }
@@ -81,7 +81,7 @@ TEST_CASE("jitter: the mean of 8 Halton(2,3)-jittered renders matches a 4x4 supe
                      kSupersample);
         const double average_error = mean_abs(average, reference);
         const double single_error = mean_abs(single, reference);
-        MESSAGE(render::to_string(effect) << ": mean |8 jittered - 4x4 supersampled| " << average_error
+        MESSAGE(plan::to_string(effect) << ": mean |8 jittered - 4x4 supersampled| " << average_error
                                           << " LSB, mean |unjittered - 4x4 supersampled| " << single_error << " LSB");
         // Tolerances (8-bit sRGB-encoded channels, mean over the image):
         // the 8-sample mean within 0.6 LSB of the reference, the single
@@ -90,7 +90,7 @@ TEST_CASE("jitter: the mean of 8 Halton(2,3)-jittered renders matches a 4x4 supe
         CHECK(average_error < 0.6);
         CHECK(single_error > 3.0 * average_error);
         if (!(average_error < 0.6)) {
-            render_test::save_failure(std::string("jitter-average-") + std::string(render::to_string(effect)),
+            render_test::save_failure(std::string("jitter-average-") + std::string(plan::to_string(effect)),
                                       average, reference);
         }
     }

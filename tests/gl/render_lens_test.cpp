@@ -11,12 +11,12 @@
 namespace {
 
 struct LensSetup {
-    render::Cameras cameras;
+    plan::Cameras cameras;
     render::LensDraw draw;
 };
 
 LensSetup lens_setup(float power, int grid) {
-    render::Cameras cameras = render_test::showcase_cameras();
+    plan::Cameras cameras = render_test::showcase_cameras();
     const auto& spot = render_test::showcase().lens;
     REQUIRE(spot.has_value());
     auto lens = render::lens_on_near_plane(cameras.main.pair, spot, power);
@@ -49,9 +49,9 @@ image::Image plain_without_disc(const render_test::RenderEnvironment& r, const r
     });
 }
 
-image::Image reference(const render_test::RenderEnvironment& r, const render::LensDraw& draw) {
+image::Image remap_reference(const render_test::RenderEnvironment& r, const render::LensDraw& draw) {
     return draw_frame(r, [&](const render::PassContext& ctx, const gl::OffscreenTarget& frame) {
-        const auto levels = render::draw_lens_reference(ctx, frame, draw, 4);
+        const auto levels = reference::draw_lens_reference(ctx, frame, draw, 4);
         REQUIRE_MESSAGE(levels.ok(), levels.error());
     });
 }
@@ -100,7 +100,7 @@ TEST_CASE("the lens with power 1 is the plain frame") {
     auto o = render_test::options();
     o.lens_power = 1.0f;
     o.lens_grid = 8;
-    const image::Image lens = r->render(render::Effect::Lens, setup.cameras, o);
+    const image::Image lens = r->render(plan::Effect::Lens, setup.cameras, o);
     // eq. 34 with p = 1 is the identity up to float rounding, and each tile
     // frustum maps its pixel rectangle onto the clip square as a crop would
     // (render_tiles_test). Tolerance 2 LSB; up to 8 pixels (0.02%) may differ
@@ -116,7 +116,7 @@ TEST_CASE("the lens with power 1 is the plain frame") {
     // The reference with p = 1 samples the plain view at the pixel centres
     // of a 4x texture: only a bilinear blur of edges. Bound: mean 1.5 LSB.
     // Measured: mean 0.84 LSB (2% of the pixels, all on edges, over 8 LSB).
-    const auto ref = render_test::compare_masked(plain, reference(*r, setup.draw),
+    const auto ref = render_test::compare_masked(plain, remap_reference(*r, setup.draw),
                                                  render_test::Mask(plain.rgba.size() / 4, true), 8);
     MESSAGE("reference p = 1 vs plain: mean " << ref.mean_abs << ", " << ref.pixels_over << " pixels over 8 LSB");
     CHECK(ref.mean_abs < 1.5);
@@ -125,13 +125,13 @@ TEST_CASE("the lens with power 1 is the plain frame") {
 TEST_CASE("the tiled lens converges to the per-pixel reference as the grid grows") {
     RENDER_TEST_ANY_RENDERER(r);
     LensSetup setup = lens_setup(2.0f, 4);
-    const image::Image exact = reference(*r, setup.draw);
+    const image::Image exact = remap_reference(*r, setup.draw);
     const render_test::Mask all(exact.rgba.size() / 4, true);
     auto o = render_test::options();
     double previous_mean = 1e9;
     for (int grid : {4, 8, 16}) {
         o.lens_grid = grid;
-        const image::Image tiled = r->render(render::Effect::Lens, setup.cameras, o);
+        const image::Image tiled = r->render(plan::Effect::Lens, setup.cameras, o);
         const auto d = render_test::compare_masked(tiled, exact, all, 8);
         const double over = static_cast<double>(d.pixels_over) / d.compared;
         MESSAGE(grid << " x " << grid << ": mean " << d.mean_abs << " LSB, max " << d.max_abs << ", "

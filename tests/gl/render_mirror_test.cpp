@@ -52,7 +52,7 @@ TEST_CASE("the mirror shows the mirrored scene") {
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     REQUIRE(render_test::count(mask) > 500); // the mirror is well in view
-    const image::Image mirrored = r->render(render::Effect::Mirror, cameras, render_test::options());
+    const image::Image mirrored = r->render(plan::Effect::Mirror, cameras, render_test::options());
     const image::Image reference = render_test::render_mirrored_geometry(*r, cameras);
     // Not a trivial match: the reflection shows the floor and the objects.
     CHECK(render_test::count_not_sky(mirrored, mask) > render_test::count(mask) / 3);
@@ -76,18 +76,18 @@ TEST_CASE("the marker behind the mirror never shows in it, unless the near plane
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
-    for (auto method : {render::MirrorMethod::Oblique, render::MirrorMethod::Rectangle}) {
-        INFO("method " << render::to_string(method));
+    for (auto method : {plan::MirrorMethod::Oblique, plan::MirrorMethod::Rectangle}) {
+        INFO("method " << plan::to_string(method));
         auto o = render_test::options();
         o.mirror_method = method;
-        const image::Image picture = r->render(render::Effect::Mirror, cameras, o);
+        const image::Image picture = r->render(plan::Effect::Mirror, cameras, o);
         CHECK(render_test::count_red(picture, mask) == 0);
     }
     // Reflection alone keeps the camera's own near plane: what lies between
     // the reflected eye and the mirror, the red marker included, shows up.
     auto o = render_test::options();
-    o.mirror_method = render::MirrorMethod::ReflectOnly;
-    const image::Image leaky = r->render(render::Effect::Mirror, cameras, o);
+    o.mirror_method = plan::MirrorMethod::ReflectOnly;
+    const image::Image leaky = r->render(plan::Effect::Mirror, cameras, o);
     const int red = render_test::count_red(leaky, mask);
     MESSAGE("reflect only: " << red << " red pixels of " << render_test::count(mask) << " in the mirror");
     CHECK(red > 50);
@@ -98,8 +98,8 @@ TEST_CASE("the exact mirror rectangle shows the mirrored scene") {
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     auto o = render_test::options();
-    o.mirror_method = render::MirrorMethod::Rectangle;
-    const image::Image rectangle = r->render(render::Effect::Mirror, cameras, o);
+    o.mirror_method = plan::MirrorMethod::Rectangle;
+    const image::Image rectangle = r->render(plan::Effect::Mirror, cameras, o);
     const image::Image reference = render_test::render_mirrored_geometry(*r, cameras);
     CHECK(render_test::count_not_sky(rectangle, mask) > render_test::count(mask) / 3);
     const auto d = render_test::compare_masked(rectangle, reference, mask, kRectangleToleranceLsb);
@@ -117,9 +117,9 @@ TEST_CASE("the oblique mirror and the exact mirror rectangle agree") {
     const auto cameras = render_test::showcase_cameras();
     const auto mask = render_test::mirror_mask(*r, cameras, render_test::options());
     auto o = render_test::options();
-    const image::Image oblique = r->render(render::Effect::Mirror, cameras, o);
-    o.mirror_method = render::MirrorMethod::Rectangle;
-    const image::Image rectangle = r->render(render::Effect::Mirror, cameras, o);
+    const image::Image oblique = r->render(plan::Effect::Mirror, cameras, o);
+    o.mirror_method = plan::MirrorMethod::Rectangle;
+    const image::Image rectangle = r->render(plan::Effect::Mirror, cameras, o);
     // Same rays, different sampling (see kRectangleToleranceLsb).
     const auto d = render_test::compare_masked(oblique, rectangle, mask, kRectangleToleranceLsb);
     MESSAGE("oblique vs rectangle: " << d.compared << " mirror pixels, " << d.pixels_over << " over 24 LSB, max "

@@ -56,11 +56,11 @@ TEST_CASE("morph targets on NORMAL: the lighting follows the weight (Lambert of 
         if (!r) {
             return;
         }
-        const auto index = render::find_camera(*loaded, std::nullopt);
+        const auto index = plan::find_camera(*loaded, std::nullopt);
         REQUIRE_MESSAGE(index.ok(), index.error());
-        auto cameras = render::make_cameras(*loaded, *index, kSidePx, kSidePx);
+        auto cameras = plan::make_cameras(*loaded, *index, kSidePx, kSidePx);
         REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-        const image::Image picture = r->render(render::Effect::Plain, *cameras, o);
+        const image::Image picture = r->render(plan::Effect::Plain, *cameras, o);
         const image::Rgba centre = image::pixel_at(picture, kSidePx / 2, kSidePx / 2);
         const float n_dot_l = static_cast<float>(w / std::sqrt(1.0 + w * w));
         const float factor = o.lighting.ambient + o.lighting.diffuse * n_dot_l;

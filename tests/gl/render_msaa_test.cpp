@@ -75,7 +75,7 @@ TEST_CASE("MSAA: 4 samples by default where the context has them; a count it can
                                   " (GL_MAX_SAMPLES=" + std::to_string(max) + ")");
     auto o = render_test::options();
     o.msaa_samples = max + 1;
-    const auto picture = r->renderer->render(render::Effect::Plain, render_test::showcase_cameras(), o);
+    const auto picture = r->renderer->render(plan::Effect::Plain, render_test::showcase_cameras(), o);
     REQUIRE_FALSE(picture.ok());
     CHECK(picture.error() == "render::Renderer::render(): " + too_many.error());
 }
@@ -91,9 +91,9 @@ TEST_CASE("MSAA: silhouettes get intermediate values, flat areas stay as they ar
     }
     const auto cameras = render_test::showcase_cameras();
     auto o = render_test::options();
-    const image::Image single = r->render(render::Effect::Plain, cameras, o);
+    const image::Image single = r->render(plan::Effect::Plain, cameras, o);
     o.msaa_samples = 4;
-    const image::Image multi = r->render(render::Effect::Plain, cameras, o);
+    const image::Image multi = r->render(plan::Effect::Plain, cameras, o);
     const EdgeStats s = edge_stats(single, multi, nullptr);
     MESSAGE("edge pixels " << s.edge_pixels << ", changed " << s.changed_on_edges << "; flat pixels changed "
                            << s.changed_off_edges);
@@ -135,9 +135,9 @@ TEST_CASE("MSAA: the reflection texture is anti-aliased too") {
         }
     }
     REQUIRE(render_test::count(inner) > 1000);
-    const image::Image single = r->render(render::Effect::Mirror, cameras, o);
+    const image::Image single = r->render(plan::Effect::Mirror, cameras, o);
     o.msaa_samples = 4;
-    const image::Image multi = r->render(render::Effect::Mirror, cameras, o);
+    const image::Image multi = r->render(plan::Effect::Mirror, cameras, o);
     const EdgeStats s = edge_stats(single, multi, &inner);
     MESSAGE("reflection edge pixels " << s.edge_pixels << ", changed " << s.changed_on_edges);
     CHECK(s.edge_pixels > 50);
@@ -156,10 +156,10 @@ TEST_CASE("MSAA: stitched tiles stay close to the full frame") {
     const auto cameras = render_test::showcase_cameras();
     auto o = render_test::options();
     o.msaa_samples = 4;
-    const image::Image full = r->render(render::Effect::Plain, cameras, o);
+    const image::Image full = r->render(plan::Effect::Plain, cameras, o);
     o.tile_columns = 3;
     o.tile_rows = 2;
-    const image::Image tiled = r->render(render::Effect::Tiles, cameras, o);
+    const image::Image tiled = r->render(plan::Effect::Tiles, cameras, o);
     // Each sample is rasterized as a pixel centre is without MSAA, so the
     // same rounding argument holds per sample: 2 LSB, and at most 0.1% of the
     // pixels (a sample within rounding of an edge) further off. Measured: 2

@@ -20,14 +20,14 @@ struct Drawn {
 };
 
 Drawn draw_non_affine(const render_test::RenderEnvironment& r, const frustum::NonAffineFrustum<float>& f,
-                      const render::NonAffineOptions& o, int width_px, int height_px) {
+                      const plan::NonAffineOptions& o, int width_px, int height_px) {
     const gl::Functions& fn = r.env->fn;
     auto depth = render::DepthPolicy::apply(fn, *r.env->context, render::DepthPath::ClipControlWhenAvailable);
     REQUIRE_MESSAGE(depth.ok(), depth.error());
     auto frame = gl::OffscreenTarget::create(fn, {width_px, height_px});
     REQUIRE_MESSAGE(frame.ok(), frame.error());
     const render::PassContext ctx = r.renderer->pass_context(*depth, render::Lighting{});
-    const auto geometry = render::WorldGeometry::from_scene(render_test::showcase());
+    const auto geometry = plan::WorldGeometry::from_scene(render_test::showcase());
     auto stats = render::draw_non_affine_frame(ctx, *frame, geometry, f, o);
     REQUIRE_MESSAGE(stats.ok(), stats.error());
     auto picture = frame->read_rgba8();
@@ -35,9 +35,9 @@ Drawn draw_non_affine(const render_test::RenderEnvironment& r, const frustum::No
     return {std::move(*picture), *stats};
 }
 
-frustum::NonAffineFrustum<float> crossed_slits(const render::Cameras& cameras) {
-    auto f = render::crossed_slits_frustum(cameras.main.pair, render::NonAffineOptions{},
-                                           frustum::DepthRange::ZeroToOne);
+frustum::NonAffineFrustum<float> crossed_slits(const plan::Cameras& cameras) {
+    auto f = plan::crossed_slits_frustum(cameras.main.pair, plan::NonAffineOptions{},
+                                         frustum::DepthRange::ZeroToOne);
     REQUIRE_MESSAGE(f.ok(), f.error());
     return *f;
 }
@@ -62,10 +62,10 @@ TEST_CASE("eq. 36 with the camera's own six planes renders the plain frame") {
                                                           p.top.flipped(), p.near.flipped(), p.far->flipped(),
                                                           glm::vec3(eye_to_centre), frustum::DepthRange::ZeroToOne);
     REQUIRE_MESSAGE(f.ok(), f.error());
-    render::NonAffineOptions o;
+    plan::NonAffineOptions o;
     o.max_edge_m = 0.0f; // a matrix frustum keeps straight edges straight
     const Drawn drawn = draw_non_affine(*r, *f, o, render_test::kWidthPx, render_test::kHeightPx);
-    const image::Image plain = r->render(render::Effect::Plain, cameras, render_test::options());
+    const image::Image plain = r->render(plan::Effect::Plain, cameras, render_test::options());
     // For a symmetric camera both denominators are proportional to the eye
     // depth, so eq. 36 is the projection itself and w = -(d_l + d_r + d_t +
     // d_b) / 2 makes the interpolation perspective-correct; only the depth
@@ -87,13 +87,13 @@ TEST_CASE("the crossed-slits frame matches the ray cast once culled and subdivid
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras(kCastWidthPx, kCastHeightPx);
     const auto f = crossed_slits(cameras);
-    const auto geometry = render::WorldGeometry::from_scene(render_test::showcase());
-    const image::Image exact =
-        render::ray_cast_non_affine(geometry, f, render::Lighting{}, render::kClearColor, kCastWidthPx, kCastHeightPx);
+    const auto geometry = plan::WorldGeometry::from_scene(render_test::showcase());
+    const image::Image exact = reference::ray_cast_non_affine(geometry, f, render::Lighting{}, render::kClearColor,
+                                                              kCastWidthPx, kCastHeightPx);
     const render_test::Mask all(static_cast<std::size_t>(kCastWidthPx * kCastHeightPx), true);
     CHECK(render_test::count_not_sky(exact, all) > kCastWidthPx * kCastHeightPx / 3); // measured 45%
 
-    render::NonAffineOptions o;
+    plan::NonAffineOptions o;
     const Drawn remedied = draw_non_affine(*r, f, o, kCastWidthPx, kCastHeightPx);
     CHECK(render_test::count_not_sky(remedied.picture, all) > kCastWidthPx * kCastHeightPx / 3);
     // Left: pixels on silhouettes where the GPU's straight edges between
@@ -114,15 +114,15 @@ TEST_CASE("eq. 36's zero denominators: naive tears the frame, culling leaves hol
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras(kCastWidthPx, kCastHeightPx);
     const auto f = crossed_slits(cameras);
-    const render::NonAffineOptions defaults;
-    const auto geometry = render::WorldGeometry::from_scene(render_test::showcase());
+    const plan::NonAffineOptions defaults;
+    const auto geometry = plan::WorldGeometry::from_scene(render_test::showcase());
 
     // Where: the floor triangles that reach across the slit. The degenerate
     // set of d_l + d_r is the plane through the slit (the line where the left
     // and right planes meet), 2.6 m in front of the eye; the visible floor
     // starts about 3.1 m out, so its nearest rows of triangles straddle it.
     int straddling = 0, degenerate = 0;
-    for (const render::WorldPrimitive& p : geometry.primitives) {
+    for (const plan::WorldPrimitive& p : geometry.primitives) {
         for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
             float low = 1e9f, high = -1e9f;
             bool any = false;
@@ -138,12 +138,12 @@ TEST_CASE("eq. 36's zero denominators: naive tears the frame, culling leaves hol
     MESSAGE(straddling << " triangles straddle d_l + d_r = 0, " << degenerate << " have a degenerate vertex");
     CHECK(straddling > 0);
 
-    const image::Image exact =
-        render::ray_cast_non_affine(geometry, f, render::Lighting{}, render::kClearColor, kCastWidthPx, kCastHeightPx);
-    render::NonAffineOptions naive = defaults;
+    const image::Image exact = reference::ray_cast_non_affine(geometry, f, render::Lighting{}, render::kClearColor,
+                                                              kCastWidthPx, kCastHeightPx);
+    plan::NonAffineOptions naive = defaults;
     naive.cull = false;
     naive.max_edge_m = 0.0f;
-    render::NonAffineOptions cull_only = defaults;
+    plan::NonAffineOptions cull_only = defaults;
     cull_only.max_edge_m = 0.0f;
     const Drawn torn = draw_non_affine(*r, f, naive, kCastWidthPx, kCastHeightPx);
     const Drawn holes = draw_non_affine(*r, f, cull_only, kCastWidthPx, kCastHeightPx);

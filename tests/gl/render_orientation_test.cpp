@@ -65,13 +65,13 @@ TEST_CASE("texture orientation: red top left on the feature square and on the cu
     {
         auto s = scene::load_gltf(std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-features/orientation.gltf");
         REQUIRE_MESSAGE(s.ok(), s.error());
-        const auto index = render::find_camera(*s, std::nullopt);
+        const auto index = plan::find_camera(*s, std::nullopt);
         REQUIRE(index.ok());
-        const auto cameras = render::make_cameras(*s, *index, kSidePx, kSidePx);
+        const auto cameras = plan::make_cameras(*s, *index, kSidePx, kSidePx);
         REQUIRE(cameras.ok());
         auto renderer = render::Renderer::create(*env->context, env->fn, *s);
         REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-        const auto picture = renderer->render(render::Effect::Plain, *cameras, render_test::options(kSidePx, kSidePx));
+        const auto picture = renderer->render(plan::Effect::Plain, *cameras, render_test::options(kSidePx, kSidePx));
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         // The square spans world [-0.8, 0.8]: its quadrants' centres at +-0.4 (pixels 19 and 44).
         check_quadrants(*picture, 19, 19, 44, 44);
@@ -91,10 +91,10 @@ TEST_CASE("texture orientation: red top left on the feature square and on the cu
         const auto view = frustum::look_at<float>(glm::vec3(0, 0, 3.5f), glm::vec3(0), glm::vec3(0, 1, 0));
         REQUIRE_MESSAGE(view.ok(), view.error());
         const frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
-        render::Cameras cameras{{"front", pair}, {"overview", pair}};
+        plan::Cameras cameras{{"front", pair}, {"overview", pair}};
         auto renderer = render::Renderer::create(*env->context, env->fn, *s);
         REQUIRE_MESSAGE(renderer.ok(), renderer.error());
-        const auto picture = renderer->render(render::Effect::Plain, cameras, render_test::options(kSidePx, kSidePx));
+        const auto picture = renderer->render(plan::Effect::Plain, cameras, render_test::options(kSidePx, kSidePx));
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         // The face at z = 0.5 spans +-0.5 m at 3 m: tan(15 deg) * 3 = 0.80 m of
         // half view, so +-0.25 m (its quadrants' centres) is +-0.31 of the half image.

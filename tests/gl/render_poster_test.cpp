@@ -22,10 +22,10 @@ constexpr int kPosterHeightPx = 384;
 // render_stereo_poster()) hands over, checking that they come top to
 // bottom, each a whole row of tiles, and that progress counts every tile
 // (with a rig: each eye's columns).
-image::Image render_poster_image(const render_test::RenderEnvironment& r, render::Effect effect,
-                                 const render::Cameras& cameras, const render::RenderOptions& o,
+image::Image render_poster_image(const render_test::RenderEnvironment& r, plan::Effect effect,
+                                 const plan::Cameras& cameras, const render::RenderOptions& o,
                                  const render::PosterLayout& layout,
-                                 const std::optional<render::StereoRig>& rig = std::nullopt) {
+                                 const std::optional<plan::StereoRig>& rig = std::nullopt) {
     image::Image out{layout.width_px, layout.height_px,
                      std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) * layout.height_px * 4)};
     int next_top_px = 0, last_done = 0;
@@ -67,28 +67,28 @@ image::Image columns_of(const image::Image& picture, int x_px, int width_px) {
 
 struct PosterCase {
     std::string name;
-    render::Effect effect;
+    plan::Effect effect;
     std::function<void(render::RenderOptions&)> adjust = {};
 };
 
 std::vector<PosterCase> poster_cases() {
     std::vector<PosterCase> cases;
-    for (render::Effect effect : render::kAllEffects) {
-        cases.push_back({std::string(render::to_string(effect)), effect});
+    for (plan::Effect effect : plan::kAllEffects) {
+        cases.push_back({std::string(plan::to_string(effect)), effect});
     }
-    cases.push_back({"mirror, rectangle method", render::Effect::Mirror,
-                     [](render::RenderOptions& o) { o.mirror_method = render::MirrorMethod::Rectangle; }});
-    cases.push_back({"mirror with fog", render::Effect::Mirror, [](render::RenderOptions& o) { o.fog.emplace(); }});
-    cases.push_back({"plain with fog", render::Effect::Plain, [](render::RenderOptions& o) { o.fog.emplace(); }});
-    cases.push_back({"recursion, portals", render::Effect::Recursion,
-                     [](render::RenderOptions& o) { o.recursion_links = render::LinkSet::Portals; }});
-    cases.push_back({"tiles with borders", render::Effect::Tiles, [](render::RenderOptions& o) {
+    cases.push_back({"mirror, rectangle method", plan::Effect::Mirror,
+                     [](render::RenderOptions& o) { o.mirror_method = plan::MirrorMethod::Rectangle; }});
+    cases.push_back({"mirror with fog", plan::Effect::Mirror, [](render::RenderOptions& o) { o.fog.emplace(); }});
+    cases.push_back({"plain with fog", plan::Effect::Plain, [](render::RenderOptions& o) { o.fog.emplace(); }});
+    cases.push_back({"recursion, portals", plan::Effect::Recursion,
+                     [](render::RenderOptions& o) { o.recursion_links = plan::LinkSet::Portals; }});
+    cases.push_back({"tiles with borders", plan::Effect::Tiles, [](render::RenderOptions& o) {
                          o.tile_columns = 5;
                          o.tile_rows = 3;
                          o.tile_borders = true;
                      }});
-    cases.push_back({"mirror, 4x MSAA", render::Effect::Mirror, [](render::RenderOptions& o) { o.msaa_samples = 4; }});
-    cases.push_back({"recursion, 4x MSAA", render::Effect::Recursion,
+    cases.push_back({"mirror, 4x MSAA", plan::Effect::Mirror, [](render::RenderOptions& o) { o.msaa_samples = 4; }});
+    cases.push_back({"recursion, 4x MSAA", plan::Effect::Recursion,
                      [](render::RenderOptions& o) { o.msaa_samples = 4; }});
     return cases;
 }
@@ -132,7 +132,7 @@ TEST_CASE("a poster in crop tiles equals the frame rendered whole, every effect"
                            << ", " << diff->pixels_over << " pixels over " << diff->tolerance);
             CHECK(diff->pixels_over <= kEdgePixels);
             if (diff->pixels_over > kEdgePixels) {
-                render_test::save_failure("poster-" + std::string(render::to_string(c.effect)) + "-" +
+                render_test::save_failure("poster-" + std::string(plan::to_string(c.effect)) + "-" +
                                               std::to_string(tile.first),
                                           direct, poster);
             }
@@ -149,11 +149,11 @@ TEST_CASE("a stereo poster in crop tiles of each eye equals the direct stereo re
     const int eye_width_px = kPosterWidthPx / 2;
     const auto cameras = render_test::showcase_cameras(eye_width_px, kPosterHeightPx);
     std::vector<PosterCase> cases;
-    for (render::Effect effect : render::kAllEffects) {
-        cases.push_back({std::string(render::to_string(effect)), effect});
+    for (plan::Effect effect : plan::kAllEffects) {
+        cases.push_back({std::string(plan::to_string(effect)), effect});
     }
-    cases.push_back({"mirror, rectangle method", render::Effect::Mirror,
-                     [](render::RenderOptions& o) { o.mirror_method = render::MirrorMethod::Rectangle; }});
+    cases.push_back({"mirror, rectangle method", plan::Effect::Mirror,
+                     [](render::RenderOptions& o) { o.mirror_method = plan::MirrorMethod::Rectangle; }});
     for (const PosterCase& c : cases) {
         INFO(c.name);
         auto o = render_test::options(kPosterWidthPx, kPosterHeightPx);
@@ -161,7 +161,7 @@ TEST_CASE("a stereo poster in crop tiles of each eye equals the direct stereo re
             c.adjust(o);
         }
         o.stereo = true;
-        const auto rig = render::stereo_rig(o, cameras.main.pair, render_test::showcase());
+        const auto rig = plan::stereo_rig(o, cameras.main.pair, render_test::showcase());
         REQUIRE(rig.has_value());
         auto direct = render::render_stereo(*r->renderer, c.effect, cameras, o, *rig);
         REQUIRE_MESSAGE(direct.ok(), direct.error());
@@ -185,7 +185,7 @@ TEST_CASE("a stereo poster in crop tiles of each eye equals the direct stereo re
                               << diff->max_abs << ", " << diff->pixels_over << " pixels over " << diff->tolerance);
             CHECK(diff->pixels_over <= kEdgePixels);
             if (diff->pixels_over > kEdgePixels) {
-                render_test::save_failure("poster-stereo-" + std::string(render::to_string(c.effect)) + "-" +
+                render_test::save_failure("poster-stereo-" + std::string(plan::to_string(c.effect)) + "-" +
                                               std::to_string(tile.first),
                                           *direct, poster);
             }
@@ -199,14 +199,14 @@ TEST_CASE("render_stereo_poster(): an odd width, or a tile wider than one eye, i
         return;
     }
     const auto cameras = render_test::showcase_cameras(32, 48);
-    const render::StereoRig rig;
+    const plan::StereoRig rig;
     const auto ignore = [](const image::Image&, int) -> frustum::Status { return {}; };
     const auto options = render_test::options(64, 48);
-    const auto odd = render::render_stereo_poster(*r->renderer, render::Effect::Plain, cameras, options, rig,
+    const auto odd = render::render_stereo_poster(*r->renderer, plan::Effect::Plain, cameras, options, rig,
                                                   {65, 48, 16, 16}, ignore);
     REQUIRE_FALSE(odd.ok());
     CHECK(odd.error() == "render::render_stereo_poster(): the width must be even (two eyes side by side), got 65 px");
-    const auto wide = render::render_stereo_poster(*r->renderer, render::Effect::Plain, cameras, options, rig,
+    const auto wide = render::render_stereo_poster(*r->renderer, plan::Effect::Plain, cameras, options, rig,
                                                    {64, 48, 33, 16}, ignore);
     REQUIRE_FALSE(wide.ok());
     CHECK(wide.error() == "render::render_stereo_poster(): tile must be 1x1 to the frame's 32x48, got 33x16");
@@ -227,7 +227,7 @@ TEST_CASE("a poster draws the rectangle method's reflection once, not once per t
         return;
     }
     const auto cameras = render_test::showcase_cameras(kPosterWidthPx, kPosterHeightPx);
-    for (const render::MirrorMethod method : {render::MirrorMethod::Rectangle, render::MirrorMethod::Oblique}) {
+    for (const plan::MirrorMethod method : {plan::MirrorMethod::Rectangle, plan::MirrorMethod::Oblique}) {
         auto o = render_test::options(kPosterWidthPx, kPosterHeightPx);
         o.mirror_method = method;
         int reflections = 0, tiles = 0;
@@ -236,9 +236,9 @@ TEST_CASE("a poster draws the rectangle method's reflection once, not once per t
             tiles += std::string(pass) == "main view";
         };
         // 4x4 tiles of 128x96.
-        render_poster_image(*r, render::Effect::Mirror, cameras, o, {kPosterWidthPx, kPosterHeightPx, 128, 96});
+        render_poster_image(*r, plan::Effect::Mirror, cameras, o, {kPosterWidthPx, kPosterHeightPx, 128, 96});
         CHECK(tiles == 16);
-        if (method == render::MirrorMethod::Rectangle) {
+        if (method == plan::MirrorMethod::Rectangle) {
             CHECK(reflections == 1); // the texture spans the mirror: every tile samples it
         } else {
             // Screen-aligned: each tile the mirror's rectangle meets draws its own crop of it.
@@ -297,7 +297,7 @@ TEST_CASE("render_poster(): a sink's error stops the poster and is returned") {
     const auto cameras = render_test::showcase_cameras(64, 48);
     int calls = 0;
     const auto status = render::render_poster(
-        *r->renderer, render::Effect::Plain, cameras, render_test::options(64, 48), {64, 48, 32, 16},
+        *r->renderer, plan::Effect::Plain, cameras, render_test::options(64, 48), {64, 48, 32, 16},
         [&](const image::Image&, int) -> frustum::Status {
             ++calls;
             return frustum::Error{"disk full"};

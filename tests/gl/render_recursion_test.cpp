@@ -64,7 +64,7 @@ frustum::MatrixPair<float> test_camera() {
 
 struct Setup {
     std::unique_ptr<render_test::RenderEnvironment> r;
-    render::Cameras cameras;
+    plan::Cameras cameras;
     std::optional<render::DepthPolicy> depth;
 };
 
@@ -73,7 +73,7 @@ std::optional<Setup> make_setup(const scene::Scene& s) {
     if (!r) {
         return std::nullopt;
     }
-    auto cameras = render::make_cameras(s, -1, kW, kH);
+    auto cameras = plan::make_cameras(s, -1, kW, kH);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     cameras->main.pair = test_camera();
     auto depth = render::DepthPolicy::apply(r->env->fn, *r->env->context, render::DepthPath::ClipControlWhenAvailable);
@@ -88,8 +88,8 @@ image::Image read(const gl::OffscreenTarget& target) {
 }
 
 // The recursion frame through `links` at `depth`, tint 1; the views' targets from `pool` when given.
-image::Image recursion_frame(const Setup& s, const std::vector<render::ViewLink>& links, const render::GpuScene& quads,
-                             const std::vector<render::ViewNode>& nodes, render::TargetPool* pool = nullptr) {
+image::Image recursion_frame(const Setup& s, const std::vector<plan::ViewLink>& links, const render::GpuScene& quads,
+                             const std::vector<plan::ViewNode>& nodes, render::TargetPool* pool = nullptr) {
     const gl::Functions& fn = s.r->env->fn;
     auto frame = gl::OffscreenTarget::create(fn, {kW, kH});
     REQUIRE_MESSAGE(frame.ok(), frame.error());
@@ -200,9 +200,9 @@ glm::mat4 frame_inverse(const frustum::Frame<float>& f) {
 // P = F_entry H F_exit^-1 with H the half turn diag(-1, 1, -1) about y
 // (P^-1 = F_exit H F_entry^-1). The view through the link is the camera
 // composed with it.
-frustum::RigidTransform<float> carry_of(const render::ViewLink& link) {
+frustum::RigidTransform<float> carry_of(const plan::ViewLink& link) {
     frustum::RigidTransform<float> carry;
-    if (link.kind == render::ViewLink::Kind::Mirror) {
+    if (link.kind == plan::ViewLink::Kind::Mirror) {
         carry.matrix = carry.inverse = frustum::reflection_matrix(link.near_plane());
         return carry;
     }
@@ -220,21 +220,21 @@ frustum::RigidTransform<float> carry_of(const render::ViewLink& link) {
 // the same way. Tolerance: 2 LSB, up to 1% of the pixels over (edges).
 // Not trivial: over 1/8 of those pixels differ from the plain camera's
 // view and from level k - 1's (measured: 27% and more, see the MESSAGEs).
-void check_levels(render::LinkSet set, int max_depth) {
-    CAPTURE(render::to_string(set));
+void check_levels(plan::LinkSet set, int max_depth) {
+    CAPTURE(plan::to_string(set));
     scene::Scene s = small_scene();
     auto setup = make_setup(s);
     if (!setup) {
         return;
     }
     const auto& camera = setup->cameras.main.pair;
-    auto links = render::place_facing_links(camera, s.world_bounds, set);
+    auto links = plan::place_facing_links(camera, s.world_bounds, set);
     REQUIRE_MESSAGE(links.ok(), links.error());
-    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    auto quads = render::GpuScene::upload(setup->r->env->fn, plan::link_scene(*links));
     REQUIRE_MESSAGE(quads.ok(), quads.error());
     const image::Image plain = direct(*setup, *quads, camera, glm::mat4(1.0f), std::nullopt, -1);
     for (int k = 1; k <= max_depth; ++k) {
-        auto nodes = render::plan_view_tree(camera, *links, {k, kW, kH, render::ViewBounds::Tight});
+        auto nodes = plan::plan_view_tree(camera, *links, {k, kW, kH, plan::ViewBounds::Tight});
         REQUIRE_MESSAGE(nodes.ok(), nodes.error());
         const image::Image frame = recursion_frame(*setup, *links, *quads, *nodes);
         int leaves = 0;
@@ -261,7 +261,7 @@ void check_levels(render::LinkSet set, int max_depth) {
                                           in_front_clip ? std::optional(frustum::transformed(*in_front_clip, world))
                                                         : std::nullopt,
                                           -1, false));
-                const render::ViewLink& link = (*links)[static_cast<std::size_t>((*nodes)[static_cast<std::size_t>(n)].link)];
+                const plan::ViewLink& link = (*links)[static_cast<std::size_t>((*nodes)[static_cast<std::size_t>(n)].link)];
                 std::vector<glm::vec3> image_quad;
                 for (const glm::vec3& corner : link.quad()) {
                     image_quad.emplace_back(world.matrix * glm::vec4(corner, 1.0f));
@@ -275,8 +275,8 @@ void check_levels(render::LinkSet set, int max_depth) {
             }
             // Keep what lies in front of the last link's near plane, carried by W.
             const frustum::Plane<float> clip = frustum::transformed(last, world);
-            const render::ViewLink& through = (*links)[static_cast<std::size_t>((*nodes)[leaf].link)];
-            const int on_near_plane = through.kind == render::ViewLink::Kind::Mirror ? through.surface_instance
+            const plan::ViewLink& through = (*links)[static_cast<std::size_t>((*nodes)[leaf].link)];
+            const int on_near_plane = through.kind == plan::ViewLink::Kind::Mirror ? through.surface_instance
                                                                                      : through.exit_instance;
             const image::Image reference = direct(*setup, *quads, camera, world.matrix, clip, on_near_plane);
             auto mask = polygon_mask(camera, regions, 1.5f);
@@ -292,7 +292,7 @@ void check_levels(render::LinkSet set, int max_depth) {
                 }
             }
             check_same(frame, reference, mask,
-                       "recursion-" + std::string(render::to_string(set)) + "-level-" + std::to_string(k) + "-node-" +
+                       "recursion-" + std::string(plan::to_string(set)) + "-level-" + std::to_string(k) + "-node-" +
                            std::to_string(leaf),
                        k == 1 ? 300 : 20);
             // Not trivial: there the frame differs from the plain camera's
@@ -322,11 +322,11 @@ TEST_CASE("a portal view equals a direct render from the camera carried through 
     if (!setup) {
         return;
     }
-    auto links = render::place_portal_pair(setup->cameras.main.pair, s.world_bounds);
+    auto links = plan::place_portal_pair(setup->cameras.main.pair, s.world_bounds);
     REQUIRE_MESSAGE(links.ok(), links.error());
-    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    auto quads = render::GpuScene::upload(setup->r->env->fn, plan::link_scene(*links));
     REQUIRE_MESSAGE(quads.ok(), quads.error());
-    auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {1, kW, kH, render::ViewBounds::Tight});
+    auto nodes = plan::plan_view_tree(setup->cameras.main.pair, *links, {1, kW, kH, plan::ViewBounds::Tight});
     REQUIRE_MESSAGE(nodes.ok(), nodes.error());
     REQUIRE(nodes->size() == 2); // the camera and the view through the entry
     const image::Image frame = recursion_frame(*setup, *links, *quads, *nodes);
@@ -334,7 +334,7 @@ TEST_CASE("a portal view equals a direct render from the camera carried through 
     // the camera composed with P = F_entry H F_exit^-1 (carry_of), over the
     // whole image, keeping what lies in front of the exit (its near plane
     // carried by P), the exit quad (on that plane) left out.
-    const render::ViewLink& portal = links->front();
+    const plan::ViewLink& portal = links->front();
     const frustum::RigidTransform<float> carry = carry_of(portal);
     const image::Image reference =
         direct(*setup, *quads, setup->cameras.main.pair, carry.matrix,
@@ -349,11 +349,11 @@ TEST_CASE("a portal view equals a direct render from the camera carried through 
 }
 
 TEST_CASE("recursion level k of two facing mirrors equals the scene reflected k times") {
-    check_levels(render::LinkSet::Mirrors, 3);
+    check_levels(plan::LinkSet::Mirrors, 3);
 }
 
 TEST_CASE("recursion level k of a portal facing itself equals a direct render from the k-times-portalled camera") {
-    check_levels(render::LinkSet::Portals, 3);
+    check_levels(plan::LinkSet::Portals, 3);
 }
 
 // render::TargetPool (the renderer's, kept across frames): the same
@@ -365,11 +365,11 @@ TEST_CASE("kept view targets: the same pixels, none made for a second frame of t
     if (!setup) {
         return;
     }
-    auto links = render::place_facing_links(setup->cameras.main.pair, s.world_bounds, render::LinkSet::Mirrors);
+    auto links = plan::place_facing_links(setup->cameras.main.pair, s.world_bounds, plan::LinkSet::Mirrors);
     REQUIRE_MESSAGE(links.ok(), links.error());
-    auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+    auto quads = render::GpuScene::upload(setup->r->env->fn, plan::link_scene(*links));
     REQUIRE_MESSAGE(quads.ok(), quads.error());
-    auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {3, kW, kH, render::ViewBounds::Tight});
+    auto nodes = plan::plan_view_tree(setup->cameras.main.pair, *links, {3, kW, kH, plan::ViewBounds::Tight});
     REQUIRE_MESSAGE(nodes.ok(), nodes.error());
     REQUIRE(nodes->size() > 2);
     const image::Image made_per_view = recursion_frame(*setup, *links, *quads, *nodes);
@@ -387,46 +387,46 @@ TEST_CASE("kept view targets: the same pixels, none made for a second frame of t
         REQUIRE_MESSAGE(diff.ok(), diff.error());
         CHECK(diff->pixels_over == 0);
     }
-    auto camera_only = render::plan_view_tree(setup->cameras.main.pair, *links, {0, kW, kH, render::ViewBounds::Tight});
+    auto camera_only = plan::plan_view_tree(setup->cameras.main.pair, *links, {0, kW, kH, plan::ViewBounds::Tight});
     REQUIRE_MESSAGE(camera_only.ok(), camera_only.error());
     recursion_frame(*setup, *links, *quads, *camera_only, &pool);
     CHECK(pool.free_count() == 0);
 }
 
 TEST_CASE("nothing behind a mirror or an exit portal appears at any level") {
-    for (render::LinkSet set : {render::LinkSet::Mirrors, render::LinkSet::Portals}) {
-        CAPTURE(render::to_string(set));
+    for (plan::LinkSet set : {plan::LinkSet::Mirrors, plan::LinkSet::Portals}) {
+        CAPTURE(plan::to_string(set));
         scene::Scene s = small_scene();
         auto probe = make_setup(s);
         if (!probe) {
             return;
         }
-        auto links = render::place_facing_links(probe->cameras.main.pair, s.world_bounds, set);
+        auto links = plan::place_facing_links(probe->cameras.main.pair, s.world_bounds, set);
         REQUIRE_MESSAGE(links.ok(), links.error());
         // A red marker just behind the left link (a mirror, or the portal's exit), within its quad.
-        const render::ViewLink& left = links->front(); // mirrors: the left one; portals: the only one
-        const frustum::Frame<float>& behind = set == render::LinkSet::Mirrors ? left.entry : left.exit;
+        const plan::ViewLink& left = links->front(); // mirrors: the left one; portals: the only one
+        const frustum::Frame<float>& behind = set == plan::LinkSet::Mirrors ? left.entry : left.exit;
         // At the depth of the model's centre, 0.3 m behind the link's plane.
         const glm::vec3 center = 0.5f * (s.world_bounds.min + s.world_bounds.max);
         add_box(s, behind.origin + glm::dot(center - behind.origin, behind.x) * behind.x - 0.3f * behind.normal(),
                 0.2f, kMarkerColor, true);
         auto setup = make_setup(s);
         REQUIRE(setup);
-        auto quads = render::GpuScene::upload(setup->r->env->fn, render::link_scene(*links));
+        auto quads = render::GpuScene::upload(setup->r->env->fn, plan::link_scene(*links));
         REQUIRE_MESSAGE(quads.ok(), quads.error());
         for (int depth : {1, 4}) {
-            auto nodes = render::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, render::ViewBounds::Tight});
+            auto nodes = plan::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, plan::ViewBounds::Tight});
             REQUIRE_MESSAGE(nodes.ok(), nodes.error());
             int deepest = 0;
-            for (const render::ViewNode& node : *nodes) {
+            for (const plan::ViewNode& node : *nodes) {
                 deepest = std::max(deepest, node.level);
             }
             CHECK(deepest == depth); // the recursion got as deep as asked
             CHECK(count_color(recursion_frame(*setup, *links, *quads, *nodes), nullptr, kMarkerColor) == 0);
             // The same views without their near planes (reflect / carry only) do show it: the check can fail.
-            auto bare = render::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, render::ViewBounds::FullViewport});
+            auto bare = plan::plan_view_tree(setup->cameras.main.pair, *links, {depth, kW, kH, plan::ViewBounds::FullViewport});
             REQUIRE_MESSAGE(bare.ok(), bare.error());
-            for (render::ViewNode& node : *bare) {
+            for (plan::ViewNode& node : *bare) {
                 node.clip_plane.reset();
             }
             CHECK(count_color(recursion_frame(*setup, *links, *quads, *bare), nullptr, kMarkerColor) > 10);
@@ -437,18 +437,18 @@ TEST_CASE("nothing behind a mirror or an exit portal appears at any level") {
 TEST_CASE("plan_view_tree: depth 0 is the camera alone, and the depth is checked") {
     const scene::Scene s = small_scene();
     const frustum::MatrixPair<float> camera = test_camera();
-    auto links = render::place_facing_links(camera, s.world_bounds, render::LinkSet::Mirrors);
+    auto links = plan::place_facing_links(camera, s.world_bounds, plan::LinkSet::Mirrors);
     REQUIRE(links.ok());
-    auto none = render::plan_view_tree(camera, *links, {0, kW, kH, render::ViewBounds::Tight});
+    auto none = plan::plan_view_tree(camera, *links, {0, kW, kH, plan::ViewBounds::Tight});
     REQUIRE(none.ok());
     CHECK(none->size() == 1);
-    auto bad = render::plan_view_tree(camera, *links, {9, kW, kH, render::ViewBounds::Tight});
+    auto bad = plan::plan_view_tree(camera, *links, {9, kW, kH, plan::ViewBounds::Tight});
     REQUIRE_FALSE(bad.ok());
     CHECK(bad.error() == "render::plan_view_tree(): depth 9 must be in 0..8");
     // Each level's rectangle lies inside its parent's.
-    auto tree = render::plan_view_tree(camera, *links, {6, kW, kH, render::ViewBounds::Tight});
+    auto tree = plan::plan_view_tree(camera, *links, {6, kW, kH, plan::ViewBounds::Tight});
     REQUIRE(tree.ok());
-    for (const render::ViewNode& node : *tree) {
+    for (const plan::ViewNode& node : *tree) {
         if (node.parent < 0) {
             continue;
         }

@@ -59,8 +59,8 @@ struct DirectStereo {
     }
 };
 
-DirectStereo direct_stereo(const render::StereoRig& rig, int height_px) {
-    const auto index = render::find_camera(render_test::showcase(), std::nullopt);
+DirectStereo direct_stereo(const plan::StereoRig& rig, int height_px) {
+    const auto index = plan::find_camera(render_test::showcase(), std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
     const scene::Camera& camera = render_test::showcase().cameras[static_cast<std::size_t>(*index)];
     REQUIRE(camera.kind == scene::Camera::Kind::Perspective);
@@ -70,11 +70,11 @@ DirectStereo direct_stereo(const render::StereoRig& rig, int height_px) {
             static_cast<double>(rig.convergence_m)};
 }
 
-render::StereoRig showcase_rig(const render::Cameras& cameras, float ipd_m) {
-    render::StereoRig rig;
+plan::StereoRig showcase_rig(const plan::Cameras& cameras, float ipd_m) {
+    plan::StereoRig rig;
     rig.ipd_m = ipd_m;
-    rig.convergence_m = render::default_convergence_m(cameras.main.pair, render_test::showcase().mirror,
-                                                      render_test::showcase().world_bounds);
+    rig.convergence_m = plan::default_convergence_m(cameras.main.pair, render_test::showcase().mirror,
+                                                    render_test::showcase().world_bounds);
     return rig;
 }
 
@@ -145,7 +145,7 @@ struct EdgeDisparities {
     double left_px = 0, right_px = 0;
     int rows = 0;
 };
-EdgeDisparities top_edge_disparities(const render_test::RenderEnvironment& r, const render::StereoCameras& eyes,
+EdgeDisparities top_edge_disparities(const render_test::RenderEnvironment& r, const plan::StereoCameras& eyes,
                                      int eye_width_px, int height_px) {
     const auto o = render_test::options(eye_width_px, height_px);
     const render_test::Mask left_mask = render_test::mirror_mask(r, eyes.left, o);
@@ -166,13 +166,13 @@ EdgeDisparities top_edge_disparities(const render_test::RenderEnvironment& r, co
 TEST_SUITE("gl") {
 
 TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, reflected depth for reflections") {
-    const render::Cameras cameras = render_test::showcase_cameras();
+    const plan::Cameras cameras = render_test::showcase_cameras();
     const scene::MirrorRect& mirror = *render_test::showcase().mirror;
-    auto frame = render::camera_frame(cameras.main.pair);
+    auto frame = plan::camera_frame(cameras.main.pair);
     REQUIRE_MESSAGE(frame.ok(), frame.error());
 
     // ipd 0: both eyes are the camera (same frustum through the same screen).
-    auto same = render::stereo_eyes(cameras.main.pair, showcase_rig(cameras, 0.0f));
+    auto same = plan::stereo_eyes(cameras.main.pair, showcase_rig(cameras, 0.0f));
     REQUIRE_MESSAGE(same.ok(), same.error());
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) {
@@ -180,11 +180,11 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
         }
     }
 
-    const render::StereoRig rig = showcase_rig(cameras, 0.064f);
+    const plan::StereoRig rig = showcase_rig(cameras, 0.064f);
     const DirectStereo direct = direct_stereo(rig, render_test::kHeightPx);
     // The default converges on the mirror's centre.
     CHECK(direct.depth_m(mirror_centre(mirror)) == doctest::Approx(rig.convergence_m).epsilon(1e-6));
-    auto eyes = render::stereo_eyes(cameras.main.pair, rig);
+    auto eyes = plan::stereo_eyes(cameras.main.pair, rig);
     REQUIRE_MESSAGE(eyes.ok(), eyes.error());
     // Each eye's inverse is its matrix's inverse (closed form, not inverted).
     for (const auto* pair : {&eyes->left, &eyes->right}) {
@@ -211,13 +211,13 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
         const double predicted = direct.disparity_px(p);
         CHECK(disparity(eyes->left, eyes->right, p) == doctest::Approx(predicted).epsilon(1e-3).scale(1.0));
         // The app's own formula (what the window prints), from the pair's frame: float rounding.
-        CHECK(render::predicted_disparity_px(*frame, rig, render::depth_m(*frame, p), kW) ==
+        CHECK(plan::predicted_disparity_px(*frame, rig, plan::depth_m(*frame, p), kW) ==
               doctest::Approx(predicted).epsilon(1e-5).scale(1.0));
     }
 
     // The sphere in each eye's own mirror pair (frustum::mirror of that eye):
     // its disparity is that of its reflected depth, not the mirror's.
-    const frustum::Plane<float> plane = render::mirror_plane(mirror);
+    const frustum::Plane<float> plane = plan::mirror_plane(mirror);
     auto left_mirror = frustum::mirror(eyes->left, plane);
     auto right_mirror = frustum::mirror(eyes->right, plane);
     REQUIRE_MESSAGE(left_mirror.ok(), left_mirror.error());
@@ -235,12 +235,12 @@ TEST_CASE("stereo eyes: the camera back at ipd 0, zero disparity on the mirror, 
 TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at its reflected depth's") {
     RENDER_TEST_ANY_RENDERER(r);
     constexpr int kEyeW = render_test::kWidthPx, kH = render_test::kHeightPx;
-    const render::Cameras cameras = render_test::showcase_cameras(kEyeW, kH);
+    const plan::Cameras cameras = render_test::showcase_cameras(kEyeW, kH);
     // A wide base (1 m) so the reflection's disparity is several pixels at
     // this size; the mirror is converged on (the default).
-    const render::StereoRig rig = showcase_rig(cameras, 1.0f);
+    const plan::StereoRig rig = showcase_rig(cameras, 1.0f);
     const DirectStereo direct = direct_stereo(rig, kH);
-    auto eyes = render::stereo_cameras(cameras, rig);
+    auto eyes = plan::stereo_cameras(cameras, rig);
     REQUIRE_MESSAGE(eyes.ok(), eyes.error());
 
     const render_test::Mask left_mask = render_test::mirror_mask(*r, eyes->left, render_test::options(kEyeW, kH));
@@ -279,9 +279,9 @@ TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at 
     // 1 px (whole columns), so an edge that does not move, or moves the
     // wrong way, fails. Measured: -3.67 / +1.67 px.
     {
-        const render::StereoRig wide = showcase_rig(cameras, 8.0f);
+        const plan::StereoRig wide = showcase_rig(cameras, 8.0f);
         const DirectStereo wide_direct = direct_stereo(wide, kH);
-        auto wide_eyes = render::stereo_cameras(cameras, wide);
+        auto wide_eyes = plan::stereo_cameras(cameras, wide);
         REQUIRE_MESSAGE(wide_eyes.ok(), wide_eyes.error());
         const EdgeDisparities e = top_edge_disparities(*r, *wide_eyes, kEyeW, kH);
         const double left_predicted = wide_direct.disparity_px(corners[0]);
@@ -296,12 +296,12 @@ TEST_CASE("stereo render: the mirror at zero disparity, the reflected sphere at 
 
     const double predicted = direct.disparity_px(reflected(*render_test::showcase().mirror, kSphereCentre));
     // Both reflection cameras that hide what is behind the mirror.
-    for (const render::MirrorMethod method : {render::MirrorMethod::Oblique, render::MirrorMethod::Rectangle}) {
-        const std::string name(render::to_string(method));
+    for (const plan::MirrorMethod method : {plan::MirrorMethod::Oblique, plan::MirrorMethod::Rectangle}) {
+        const std::string name(plan::to_string(method));
         INFO("method " << name);
         render::RenderOptions o = render_test::options(2 * kEyeW, kH);
         o.mirror_method = method;
-        auto picture = render::render_stereo(*r->renderer, render::Effect::Mirror, cameras, o, rig);
+        auto picture = render::render_stereo(*r->renderer, plan::Effect::Mirror, cameras, o, rig);
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         REQUIRE(picture->width == 2 * kEyeW);
         const Centroid left = orange_centroid(*picture, 0, kEyeW, left_mask);

@@ -9,7 +9,7 @@ TEST_CASE("no GL object outlives a renderer") {
         RENDER_TEST_ANY_RENDERER(r);
         CHECK(gl::live_object_count() > before);
         const auto cameras = render_test::showcase_cameras();
-        for (render::Effect effect : render::kAllEffects) {
+        for (plan::Effect effect : plan::kAllEffects) {
             r->render(effect, cameras, render_test::options());
         }
     }

@@ -48,7 +48,7 @@ struct RenderEnvironment {
     std::unique_ptr<gl_test::Environment> env;
     std::optional<render::Renderer> renderer;
 
-    image::Image render(render::Effect effect, const render::Cameras& cameras, const render::RenderOptions& o) const {
+    image::Image render(plan::Effect effect, const plan::Cameras& cameras, const render::RenderOptions& o) const {
         auto picture = renderer->render(effect, cameras, o);
         REQUIRE_MESSAGE(picture.ok(), picture.error());
         return std::move(*picture);
@@ -90,21 +90,21 @@ inline std::unique_ptr<RenderEnvironment> make_any_renderer(const scene::Scene& 
 // renderer on `env`, and options() at the given size with the curved
 // mirror's sagitta fitted to the mirror (docs/any-scene.md).
 struct DerivedScene {
-    render::Cameras cameras;
+    plan::Cameras cameras;
     std::optional<render::Renderer> renderer;
     render::RenderOptions options;
 };
 inline DerivedScene derive_scene(const gl_test::Environment& env, scene::Scene& scene, int width_px, int height_px) {
-    const auto index = render::find_camera(scene, std::nullopt);
+    const auto index = plan::find_camera(scene, std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
-    auto cameras = render::make_cameras(scene, *index, width_px, height_px);
+    auto cameras = plan::make_cameras(scene, *index, width_px, height_px);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-    render::place_mirror(scene, render::MirrorRequest{}, &cameras->main.pair); // where this camera sees it
+    plan::place_mirror(scene, plan::MirrorRequest{}, &cameras->main.pair); // where this camera sees it
     REQUIRE(scene.mirror);
     auto renderer = render::Renderer::create(*env.context, env.fn, scene);
     REQUIRE_MESSAGE(renderer.ok(), renderer.error());
     DerivedScene out{std::move(*cameras), std::move(*renderer), options(width_px, height_px)};
-    out.options.curved.sagitta_m = render::fit_sagitta_m(*scene.mirror, out.options.curved.shape, scene.world_bounds);
+    out.options.curved.sagitta_m = plan::fit_sagitta_m(*scene.mirror, out.options.curved.shape, scene.world_bounds);
     return out;
 }
 
@@ -172,9 +172,9 @@ inline Mask projected_mirror_mask(const frustum::MatrixPair<float>& camera, cons
 // else in the showcase is pure black: ambient light). Only occlusion comes
 // from the effect; that its black pixels lie inside the projection is
 // checked (render_mirror_test.cpp, "the mirror's pixels are its quad's projection").
-inline Mask effect_black_pixels(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
+inline Mask effect_black_pixels(const RenderEnvironment& r, const plan::Cameras& cameras, render::RenderOptions o) {
     o.mirror_tint = glm::vec3(0.0f);
-    const image::Image black = r.render(render::Effect::Mirror, cameras, o);
+    const image::Image black = r.render(plan::Effect::Mirror, cameras, o);
     Mask mask(static_cast<std::size_t>(black.width * black.height));
     for (int y = 0; y < black.height; ++y) {
         for (int x = 0; x < black.width; ++x) {
@@ -191,7 +191,7 @@ inline Mask both(const Mask& a, const Mask& b) {
     return out;
 }
 
-inline Mask mirror_mask(const RenderEnvironment& r, const render::Cameras& cameras, render::RenderOptions o) {
+inline Mask mirror_mask(const RenderEnvironment& r, const plan::Cameras& cameras, render::RenderOptions o) {
     REQUIRE(r.renderer.has_value());
     const scene::MirrorRect& mirror = *showcase().mirror;
     return both(projected_mirror_mask(cameras.main.pair, mirror, o.width_px, o.height_px),
@@ -245,14 +245,14 @@ inline int count_red(const image::Image& picture, const Mask& mask) {
 // flips per draw), drawn from the unchanged camera into a new target (left
 // bound), with fragments in front of the mirror plane discarded (they are
 // reflections of what lies behind it).
-inline gl::OffscreenTarget draw_mirrored_geometry(const RenderEnvironment& r, const render::Cameras& cameras,
+inline gl::OffscreenTarget draw_mirrored_geometry(const RenderEnvironment& r, const plan::Cameras& cameras,
                                                   const render::DepthPolicy& depth) {
     const gl::Functions& fn = r.env->fn;
     auto target = gl::OffscreenTarget::create(fn, {kWidthPx, kHeightPx});
     REQUIRE_MESSAGE(target.ok(), target.error());
     const render::PassContext ctx = r.renderer->pass_context(depth, render::Lighting{});
     const scene::MirrorRect& mirror = *showcase().mirror;
-    const frustum::Plane<float> plane = render::mirror_plane(mirror);
+    const frustum::Plane<float> plane = plan::mirror_plane(mirror);
     render::begin_frame(ctx);
     render::SceneDraw draw(cameras.main.pair);
     draw.pre_model = frustum::reflection_matrix(plane);
@@ -269,7 +269,7 @@ inline render::DepthPolicy apply_depth_policy(const RenderEnvironment& r,
     return *depth;
 }
 
-inline image::Image render_mirrored_geometry(const RenderEnvironment& r, const render::Cameras& cameras) {
+inline image::Image render_mirrored_geometry(const RenderEnvironment& r, const plan::Cameras& cameras) {
     const gl::OffscreenTarget target = draw_mirrored_geometry(r, cameras, apply_depth_policy(r));
     auto picture = target.read_rgba8();
     REQUIRE_MESSAGE(picture.ok(), picture.error());

@@ -9,7 +9,7 @@ TEST_SUITE("gl") {
 TEST_CASE("stitched tiles equal the full frame") {
     RENDER_TEST_ANY_RENDERER(r);
     const auto cameras = render_test::showcase_cameras();
-    const image::Image full = r->render(render::Effect::Plain, cameras, render_test::options());
+    const image::Image full = r->render(plan::Effect::Plain, cameras, render_test::options());
     for (const auto& grid : {std::pair{2, 2}, std::pair{3, 2}, std::pair{4, 4}}) {
         // Plain ints, not a structured binding: INFO and MESSAGE capture in
         // lambdas, which may not capture bindings before C++20.
@@ -18,7 +18,7 @@ TEST_CASE("stitched tiles equal the full frame") {
         auto o = render_test::options();
         o.tile_columns = columns;
         o.tile_rows = rows;
-        const image::Image tiled = r->render(render::Effect::Tiles, cameras, o);
+        const image::Image tiled = r->render(plan::Effect::Tiles, cameras, o);
         // llvmpipe rasterizes a pixel the same whatever viewport it lies in,
         // and each tile pair maps a world point to the same pixel up to float
         // rounding. Tolerance 2 LSB per channel; at most kEdgePixels pixels
@@ -43,9 +43,9 @@ TEST_CASE("--tile-borders paints the seams between tiles and nothing else") {
     auto o = render_test::options();
     o.tile_columns = 3;
     o.tile_rows = 2;
-    const image::Image plain_tiles = r->render(render::Effect::Tiles, cameras, o);
+    const image::Image plain_tiles = r->render(plan::Effect::Tiles, cameras, o);
     o.tile_borders = true;
-    const image::Image bordered = r->render(render::Effect::Tiles, cameras, o);
+    const image::Image bordered = r->render(plan::Effect::Tiles, cameras, o);
     const auto tiles = frustum::crop_tiles(cameras.main.pair, plain_tiles.width, plain_tiles.height, 3, 2);
     REQUIRE(tiles.ok());
     // The seams: the first column and the first row of every tile not at the left or bottom edge.

@@ -53,20 +53,20 @@ TEST_SUITE("plan") {
 
 TEST_CASE("curved-mirror fits: Newton with the analytic Hessian converges in few steps, never at its cap") {
     struct Case {
-        render::CapShape shape;
+        plan::CapShape shape;
         int grid;
         double mean_steps; // at most: issue 34's 8 for the cylinder (measured 6.9, 5.3), 4 for the sphere (3.0, 2.7)
     };
-    for (const Case c : {Case{render::CapShape::Sphere, 4, 4.0}, Case{render::CapShape::Sphere, 16, 4.0},
-                         Case{render::CapShape::Cylinder, 4, 8.0}, Case{render::CapShape::Cylinder, 16, 8.0}}) {
-        INFO(render::to_string(c.shape) << " G = " << c.grid);
-        auto mirror = render::CurvedMirror::create(*render_test::showcase().mirror, c.shape, 0.3);
+    for (const Case c : {Case{plan::CapShape::Sphere, 4, 4.0}, Case{plan::CapShape::Sphere, 16, 4.0},
+                         Case{plan::CapShape::Cylinder, 4, 8.0}, Case{plan::CapShape::Cylinder, 16, 8.0}}) {
+        INFO(plan::to_string(c.shape) << " G = " << c.grid);
+        auto mirror = plan::CurvedMirror::create(*render_test::showcase().mirror, c.shape, 0.3);
         REQUIRE_MESSAGE(mirror.ok(), mirror.error());
         const glm::dvec3 eye = main_eye();
-        auto planned = render::plan_curved_mirror(*mirror, eye, render_test::showcase().world_bounds, c.grid);
+        auto planned = plan::plan_curved_mirror(*mirror, eye, render_test::showcase().world_bounds, c.grid);
         REQUIRE_MESSAGE(planned.ok(), planned.error());
         REQUIRE(planned->has_value());
-        const render::CurvedPlan& plan = **planned;
+        const plan::CurvedPlan& plan = **planned;
         CHECK(plan.failed == 0);
         double steps = 0.0;
         int most = 0;
@@ -79,23 +79,23 @@ TEST_CASE("curved-mirror fits: Newton with the analytic Hessian converges in few
             }
         }
         steps /= static_cast<double>(plan.patches.size());
-        MESSAGE(render::to_string(c.shape) << " G = " << c.grid << ": Newton steps mean " << steps << ", max " << most);
+        MESSAGE(plan::to_string(c.shape) << " G = " << c.grid << ": Newton steps mean " << steps << ", max " << most);
         CHECK(steps <= c.mean_steps);
         CHECK(most < 50); // kMaxFitIterations: no fit stops at the cap
     }
 }
 
 TEST_CASE("curved-mirror fits reach at least the objective of the former gradient ascent") {
-    for (const render::CapShape shape : {render::CapShape::Sphere, render::CapShape::Cylinder}) {
-        auto mirror = render::CurvedMirror::create(*render_test::showcase().mirror, shape, 0.3);
+    for (const plan::CapShape shape : {plan::CapShape::Sphere, plan::CapShape::Cylinder}) {
+        auto mirror = plan::CurvedMirror::create(*render_test::showcase().mirror, shape, 0.3);
         REQUIRE(mirror.ok());
         const glm::dvec3 eye = main_eye();
         for (int grid : {4, 16}) {
-            INFO(render::to_string(shape) << " G = " << grid);
-            auto planned = render::plan_curved_mirror(*mirror, eye, render_test::showcase().world_bounds, grid);
+            INFO(plan::to_string(shape) << " G = " << grid);
+            auto planned = plan::plan_curved_mirror(*mirror, eye, render_test::showcase().world_bounds, grid);
             REQUIRE(planned.ok());
             for (const auto& patch : (*planned)->patches) {
-                const auto target = render::patch_target(*mirror, eye, grid, patch.i, patch.j);
+                const auto target = plan::patch_target(*mirror, eye, grid, patch.i, patch.j);
                 // The paper's start as fit_volume() picks it (0 solves), then
                 // the former ascent's 200 steps from it.
                 const auto start = frustum::fit_volume(target, 10.0, frustum::DepthRange::ZeroToOne, 0);

@@ -28,10 +28,10 @@ TEST_SUITE("gl") {
 
 TEST_CASE("cameras are found by name, node name or index, and placed by their node") {
     const scene::Scene& s = render_test::showcase();
-    CHECK(*render::find_camera(s, std::nullopt) == 0); // "main"
-    CHECK(*render::find_camera(s, std::string("overview")) == 1);
-    CHECK(*render::find_camera(s, std::string("1")) == 1);
-    const auto missing = render::find_camera(s, std::string("2"));
+    CHECK(*plan::find_camera(s, std::nullopt) == 0); // "main"
+    CHECK(*plan::find_camera(s, std::string("overview")) == 1);
+    CHECK(*plan::find_camera(s, std::string("1")) == 1);
+    const auto missing = plan::find_camera(s, std::string("2"));
     REQUIRE_FALSE(missing.ok());
     CHECK(missing.error() == "render::find_camera(): no camera '2'; the scene's cameras are: main, overview");
     // The view is the closed-form inverse of camera_to_world: the eye read
@@ -45,13 +45,13 @@ TEST_CASE("a reflection texel is the screen pixel it lies under") {
     const scene::MirrorRect& mirror = *render_test::showcase().mirror;
     const auto camera = render_test::showcase_cameras().main.pair;
     const glm::vec2 screen(render_test::kWidthPx, render_test::kHeightPx);
-    for (auto method : {render::MirrorMethod::Oblique, render::MirrorMethod::ReflectOnly}) {
-        INFO("method " << render::to_string(method));
-        const auto plan = render::plan_reflection(mirror, camera, render_test::kWidthPx, render_test::kHeightPx,
-                                                  method, render_test::showcase().world_bounds);
+    for (auto method : {plan::MirrorMethod::Oblique, plan::MirrorMethod::ReflectOnly}) {
+        INFO("method " << plan::to_string(method));
+        const auto plan = plan::plan_reflection(mirror, camera, render_test::kWidthPx, render_test::kHeightPx,
+                                                method, render_test::showcase().world_bounds);
         REQUIRE_MESSAGE(plan.ok(), plan.error());
         REQUIRE(plan->has_value());
-        const render::ReflectionView& view = **plan;
+        const plan::ReflectionView& view = **plan;
         CHECK(view.pair.flips_winding());
         CHECK(view.texture_width_px == view.screen_rect.width);
         CHECK(view.texture_height_px == view.screen_rect.height);
@@ -75,8 +75,8 @@ TEST_CASE("no reflection when the mirror is seen from behind or out of view") {
     const glm::vec3 center = mirror.corner + 0.5f * (mirror.a1 + mirror.a2);
     const glm::vec3 normal = glm::normalize(glm::cross(mirror.a1, mirror.a2));
     const auto plan_from = [&](const frustum::MatrixPair<float>& camera) {
-        auto plan = render::plan_reflection(mirror, camera, 64, 36, render::MirrorMethod::Oblique,
-                                            render_test::showcase().world_bounds);
+        auto plan = plan::plan_reflection(mirror, camera, 64, 36, plan::MirrorMethod::Oblique,
+                                          render_test::showcase().world_bounds);
         REQUIRE_MESSAGE(plan.ok(), plan.error());
         return plan->has_value();
     };
@@ -86,7 +86,7 @@ TEST_CASE("no reflection when the mirror is seen from behind or out of view") {
 }
 
 TEST_CASE("frustum lines: edges, eye lines and crosses where the key points are finite") {
-    const render::FrustumLineStyle style{0.1f, 50.0f};
+    const plan::FrustumLineStyle style{0.1f, 50.0f};
     auto perspective = frustum::perspective<float>(1.0f, 1.5f, 0.5f, 20.0f, frustum::DepthRange::ZeroToOne);
     auto infinite = frustum::perspective<float>(1.0f, 1.5f, 0.5f, frustum::infinite_far, frustum::DepthRange::ZeroToOne);
     auto orthographic = frustum::orthographic<float>(-2.0f, 2.0f, -1.0f, 1.0f, 0.0f, 10.0f, frustum::DepthRange::ZeroToOne);
@@ -94,12 +94,12 @@ TEST_CASE("frustum lines: edges, eye lines and crosses where the key points are 
     REQUIRE(infinite.ok());
     REQUIRE(orthographic.ok());
     // 12 edges, 4 eye lines, crosses (3 segments) at O and D; O1, O2 at infinity.
-    CHECK(render::frustum_lines(*perspective, style).size() == 2 * (12 + 4 + 3 + 3));
+    CHECK(plan::frustum_lines(*perspective, style).size() == 2 * (12 + 4 + 3 + 3));
     // The eye of an orthographic frustum is at infinity: no eye lines or cross.
-    CHECK(render::frustum_lines(*orthographic, style).size() == 2 * (12 + 3));
+    CHECK(plan::frustum_lines(*orthographic, style).size() == 2 * (12 + 3));
     // Infinite far: each side edge is a ray infinite_length_m long, going on
     // from its near corner away from the eye (the origin).
-    const auto lines = render::frustum_lines(*infinite, style);
+    const auto lines = plan::frustum_lines(*infinite, style);
     REQUIRE(lines.size() == 2 * (12 + 4 + 3 + 3));
     for (std::size_t edge = 0; edge < 4; ++edge) {
         const std::size_t side = 6 * edge + 4; // near, far, side per corner

@@ -49,7 +49,7 @@ const glm::vec3 kMiddle(0.6f, 0.3f, 0.0f);
 TEST_SUITE("plan") {
 
 TEST_CASE("fit_lens: the derived lens is centred on the model as seen, half its radius as seen") {
-    const auto lens = render::fit_lens(camera(), std::nullopt, kBounds, {}, 2.0f);
+    const auto lens = plan::fit_lens(camera(), std::nullopt, kBounds, {}, 2.0f);
     REQUIRE_MESSAGE(lens.ok(), lens.error());
     const glm::vec2 expected = seen_on_near_plane(kMiddle); // (0.6, 0.3) 5 m out: inside the middle 60%
     CHECK(std::abs(lens->center_m.x - expected.x) <= 1e-6f);
@@ -64,7 +64,7 @@ TEST_CASE("fit_lens: the derived lens is centred on the model as seen, half its 
 
 TEST_CASE("fit_lens: a lens spot in front of the camera is used as it is seen") {
     const scene::LensSpot spot{glm::vec3(-0.5f, 0.2f, 1.0f), 0.3f, -1};
-    const auto lens = render::fit_lens(camera(), spot, kBounds, {}, 1.5f);
+    const auto lens = plan::fit_lens(camera(), spot, kBounds, {}, 1.5f);
     REQUIRE_MESSAGE(lens.ok(), lens.error());
     const glm::vec2 expected = seen_on_near_plane(spot.center);
     CHECK(std::abs(lens->center_m.x - expected.x) <= 1e-6f);
@@ -73,11 +73,11 @@ TEST_CASE("fit_lens: a lens spot in front of the camera is used as it is seen") 
 }
 
 TEST_CASE("fit_lens: --lens-center and --lens-radius are fractions of the frame's half extents") {
-    render::EffectFit fit;
+    plan::EffectFit fit;
     fit.lens_center = glm::vec2(0.5f, -0.25f);
     fit.lens_radius = 0.3f;
     const scene::LensSpot spot{glm::vec3(-0.5f, 0.2f, 1.0f), 0.3f, -1}; // given values win over the spot
-    const auto lens = render::fit_lens(camera(), spot, kBounds, fit, 2.0f);
+    const auto lens = plan::fit_lens(camera(), spot, kBounds, fit, 2.0f);
     REQUIRE_MESSAGE(lens.ok(), lens.error());
     CHECK(std::abs(lens->center_m.x - 0.5f * kHalfWidthM) <= 1e-6f);
     CHECK(std::abs(lens->center_m.y + 0.25f * kHalfHeightM) <= 1e-6f);
@@ -85,14 +85,14 @@ TEST_CASE("fit_lens: --lens-center and --lens-radius are fractions of the frame'
 }
 
 TEST_CASE("fit_non_affine: pivot at the model centre's depth, slit a third of it, unless given") {
-    const auto derived = render::fit_non_affine(camera(), kBounds, render::NonAffineOptions{}, {});
+    const auto derived = plan::fit_non_affine(camera(), kBounds, plan::NonAffineOptions{}, {});
     REQUIRE_MESSAGE(derived.ok(), derived.error());
     CHECK(std::abs(derived->pivot_depth_m - 5.0f) <= 1e-5f);
     CHECK(std::abs(derived->slit_depth_m - 5.0f / 3.0f) <= 1e-5f);
-    render::EffectFit fit;
+    plan::EffectFit fit;
     fit.slit_m = 1.0f;
     fit.pivot_m = 4.0f;
-    const auto given = render::fit_non_affine(camera(), kBounds, render::NonAffineOptions{}, fit);
+    const auto given = plan::fit_non_affine(camera(), kBounds, plan::NonAffineOptions{}, fit);
     REQUIRE_MESSAGE(given.ok(), given.error());
     CHECK(given->slit_depth_m == 1.0f);
     CHECK(given->pivot_depth_m == 4.0f);
@@ -100,16 +100,16 @@ TEST_CASE("fit_non_affine: pivot at the model centre's depth, slit a third of it
 
 } // TEST_SUITE
 
-// --mirror-plane and --mirror-rect (render::place_mirror): the mirror the
+// --mirror-plane and --mirror-rect (plan::place_mirror): the mirror the
 // options say, on the showcase, whatever its own mirror node.
 TEST_SUITE("plan") {
 
 TEST_CASE("--mirror-plane puts the mirror in that plane, reflecting towards (a, b, c); --mirror-rect is the rectangle given") {
     {
         scene::Scene s = render_test::showcase();
-        render::MirrorRequest request;
+        plan::MirrorRequest request;
         request.plane = glm::vec4(0.0f, 2.0f, 0.0f, 1.0f); // y = -0.5, unnormalized
-        const auto said = render::place_mirror(s, request);
+        const auto said = plan::place_mirror(s, request);
         REQUIRE(s.mirror.has_value());
         CHECK(said.has_value()); // stderr says where it went
         const scene::MirrorRect& m = *s.mirror;
@@ -127,9 +127,9 @@ TEST_CASE("--mirror-plane puts the mirror in that plane, reflecting towards (a, 
     }
     {
         scene::Scene s = render_test::showcase();
-        render::MirrorRequest request;
+        plan::MirrorRequest request;
         request.rect = std::array<float, 9>{1.0f, 2.0f, -3.0f, 2.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
-        render::place_mirror(s, request);
+        plan::place_mirror(s, request);
         REQUIRE(s.mirror.has_value());
         const scene::MirrorRect& m = *s.mirror;
         const glm::vec3 centre = m.corner + 0.5f * (m.a1 + m.a2);

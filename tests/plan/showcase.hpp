@@ -25,10 +25,10 @@ inline const scene::Scene& showcase() {
     return loaded;
 }
 
-inline render::Cameras showcase_cameras(int width_px = kWidthPx, int height_px = kHeightPx) {
-    const auto index = render::find_camera(showcase(), std::nullopt);
+inline plan::Cameras showcase_cameras(int width_px = kWidthPx, int height_px = kHeightPx) {
+    const auto index = plan::find_camera(showcase(), std::nullopt);
     REQUIRE_MESSAGE(index.ok(), index.error());
-    auto cameras = render::make_cameras(showcase(), *index, width_px, height_px);
+    auto cameras = plan::make_cameras(showcase(), *index, width_px, height_px);
     REQUIRE_MESSAGE(cameras.ok(), cameras.error());
     return std::move(*cameras);
 }

@@ -15,12 +15,12 @@ namespace {
 // One primitive: a rows x rows grid of quads (2 triangles each) over a
 // side_m x side_m square, so its longest edge is a quad's diagonal while
 // the primitive spans side_m.
-render::WorldPrimitive grid(int rows, float side_m) {
-    render::WorldPrimitive p;
+plan::WorldPrimitive grid(int rows, float side_m) {
+    plan::WorldPrimitive p;
     const float step = side_m / static_cast<float>(rows);
     for (int j = 0; j <= rows; ++j) {
         for (int i = 0; i <= rows; ++i) {
-            render::WorldVertex v;
+            plan::WorldVertex v;
             v.position = glm::vec3(static_cast<float>(i) * step, 0.0f, static_cast<float>(j) * step);
             p.vertices.push_back(v);
         }
@@ -40,39 +40,39 @@ render::WorldPrimitive grid(int rows, float side_m) {
 TEST_SUITE("plan") {
 
 TEST_CASE("the showcase's non-affine split keeps the 0.25 m edge: it is within the triangle budget") {
-    const auto world = render::WorldGeometry::from_scene(render_test::showcase());
-    const std::size_t count = render::split_triangle_count(world, 0.25f);
-    MESSAGE("showcase split at 0.25 m: " << count << " triangles (budget " << render::kMaxSplitTriangles << ")");
-    CHECK(count <= render::kMaxSplitTriangles);
-    CHECK(render::edge_within_budget(world, 0.25f) == 0.25f);
-    const auto split = render::SplitGeometry::build(world, 0.25f);
+    const auto world = plan::WorldGeometry::from_scene(render_test::showcase());
+    const std::size_t count = plan::split_triangle_count(world, 0.25f);
+    MESSAGE("showcase split at 0.25 m: " << count << " triangles (budget " << plan::kMaxSplitTriangles << ")");
+    CHECK(count <= plan::kMaxSplitTriangles);
+    CHECK(plan::edge_within_budget(world, 0.25f) == 0.25f);
+    const auto split = plan::SplitGeometry::build(world, 0.25f);
     CHECK(split.max_edge_m == 0.25f);
 }
 
 TEST_CASE("a long primitive's split grows the edge until it fits the budget, and no further") {
-    render::WorldGeometry world;
+    plan::WorldGeometry world;
     // 100 x 100 quads over 400 m: 20000 triangles with 5.7 m diagonals; at
     // 0.25 m each would split 23 x 23 times (10.6 million triangles).
     world.primitives.push_back(grid(100, 400.0f));
-    REQUIRE(render::split_triangle_count(world, 0.25f) > render::kMaxSplitTriangles);
-    const float edge_m = render::edge_within_budget(world, 0.25f);
-    const std::size_t count = render::split_triangle_count(world, edge_m);
+    REQUIRE(plan::split_triangle_count(world, 0.25f) > plan::kMaxSplitTriangles);
+    const float edge_m = plan::edge_within_budget(world, 0.25f);
+    const std::size_t count = plan::split_triangle_count(world, edge_m);
     MESSAGE("edge " << edge_m << " m: " << count << " triangles");
-    CHECK(count <= render::kMaxSplitTriangles);
-    CHECK(render::split_triangle_count(world, edge_m / 2.0f) > render::kMaxSplitTriangles); // the first that fits
-    const auto split = render::SplitGeometry::build(world, 0.25f);
+    CHECK(count <= plan::kMaxSplitTriangles);
+    CHECK(plan::split_triangle_count(world, edge_m / 2.0f) > plan::kMaxSplitTriangles); // the first that fits
+    const auto split = plan::SplitGeometry::build(world, 0.25f);
     CHECK(split.max_edge_m == edge_m);
     std::size_t built = 0;
-    for (const render::WorldPrimitive& p : split.split.primitives) {
+    for (const plan::WorldPrimitive& p : split.split.primitives) {
         built += p.indices.size() / 3;
     }
     CHECK(built == count);
     // A small budget: once nothing is split the geometry's own count stays,
     // even above it.
-    const float unsplit_m = render::edge_within_budget(world, 0.25f, 1000);
-    CHECK(render::split_triangle_count(world, unsplit_m) == 20000);
+    const float unsplit_m = plan::edge_within_budget(world, 0.25f, 1000);
+    CHECK(plan::split_triangle_count(world, unsplit_m) == 20000);
     // No split asked for: none.
-    CHECK(render::edge_within_budget(world, 0.0f) == 0.0f);
+    CHECK(plan::edge_within_budget(world, 0.0f) == 0.0f);
 }
 
 } // TEST_SUITE

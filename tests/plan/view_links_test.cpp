@@ -1,4 +1,4 @@
-// The recursion effect's facing mirrors (render::place_facing_links) seen
+// The recursion effect's facing mirrors (plan::place_facing_links) seen
 // from the default camera of every scene the "any scene" tests walk: both
 // mirrors inside the view, each covering a good part of it, whatever the
 // camera's pitch (the framing camera of a sample looks down on the model).
@@ -22,8 +22,8 @@ constexpr int kW = 256, kH = 144;
 
 // The part of a link's quad nearer to the eye than `depth_m` along the
 // view direction `forward` (cut across its x axis), as a scene::MirrorRect
-// for render::mirror_screen_rect(); the whole quad when all of it is nearer.
-scene::MirrorRect near_part(const render::ViewLink& link, const glm::vec3& eye, const glm::vec3& forward,
+// for plan::mirror_screen_rect(); the whole quad when all of it is nearer.
+scene::MirrorRect near_part(const plan::ViewLink& link, const glm::vec3& eye, const glm::vec3& forward,
                             float depth_m) {
     const frustum::Frame<float>& f = link.entry;
     // depth(t) = dot(origin + t x - eye, forward) for t in [-w, w] along x.
@@ -50,11 +50,11 @@ TEST_CASE("both facing mirrors lie inside the default camera's view of every sam
         CAPTURE(file.filename().string());
         auto loaded = scene::load_gltf(file.string());
         REQUIRE_MESSAGE(loaded.ok(), loaded.error());
-        const auto index = render::find_camera(*loaded, std::nullopt);
+        const auto index = plan::find_camera(*loaded, std::nullopt);
         REQUIRE_MESSAGE(index.ok(), index.error());
-        auto cameras = render::make_cameras(*loaded, *index, kW, kH);
+        auto cameras = plan::make_cameras(*loaded, *index, kW, kH);
         REQUIRE_MESSAGE(cameras.ok(), cameras.error());
-        auto links = render::place_facing_links(cameras->main.pair, loaded->world_bounds, render::LinkSet::Mirrors);
+        auto links = plan::place_facing_links(cameras->main.pair, loaded->world_bounds, plan::LinkSet::Mirrors);
         if (!links) {
             // Only a camera without an eye (orthographic) has no placement.
             CHECK(cameras->main.pair.matrix()[3][3] != 0.0f);
@@ -68,10 +68,10 @@ TEST_CASE("both facing mirrors lie inside the default camera's view of every sam
         const glm::vec3 forward = glm::normalize(glm::cross(near->y_axis, near->x_axis));
         const glm::vec3 center = 0.5f * (loaded->world_bounds.min + loaded->world_bounds.max);
         const float depth_m = glm::dot(center - near->eye, forward);
-        std::vector<render::PixelRect> rects;
-        for (const render::ViewLink& link : *links) {
+        std::vector<plan::PixelRect> rects;
+        for (const plan::ViewLink& link : *links) {
             const auto rect =
-                render::mirror_screen_rect(near_part(link, near->eye, forward, depth_m), cameras->main.pair, kW, kH);
+                plan::mirror_screen_rect(near_part(link, near->eye, forward, depth_m), cameras->main.pair, kW, kH);
             REQUIRE(rect);
             INFO("rectangle " << rect->width << "x" << rect->height << " at " << rect->x << "," << rect->y);
             // Seen along the corridor, each covers its side of the view: a

@@ -35,7 +35,7 @@ gl::KeyPressed key(gl::Key k, bool shift = false) {
 }
 
 struct Rig {
-    render::Cameras cameras = render_test::showcase_cameras();
+    plan::Cameras cameras = render_test::showcase_cameras();
     window::Controls controls{window::control_scene(render_test::showcase())};
     window::ViewerState state;
 
@@ -46,15 +46,15 @@ struct Rig {
 
 TEST_SUITE("window") {
 
-TEST_CASE("number keys pick the effects of render::kAllEffects in order") {
+TEST_CASE("number keys pick the effects of plan::kAllEffects in order") {
     Rig rig;
-    for (std::size_t i = 0; i < std::size(render::kAllEffects) && i < 9; ++i) {
+    for (std::size_t i = 0; i < std::size(plan::kAllEffects) && i < 9; ++i) {
         rig.send(character(static_cast<char>('1' + i)));
-        CHECK(rig.state.effect == render::kAllEffects[i]);
+        CHECK(rig.state.effect == plan::kAllEffects[i]);
     }
     rig.send(character('1'));
-    rig.send(character(static_cast<char>('1' + std::size(render::kAllEffects)))); // one past: ignored
-    CHECK(rig.state.effect == render::Effect::Plain);
+    rig.send(character(static_cast<char>('1' + std::size(plan::kAllEffects)))); // one past: ignored
+    CHECK(rig.state.effect == plan::Effect::Plain);
 }
 
 TEST_CASE("toggles and Escape") {
@@ -70,10 +70,10 @@ TEST_CASE("toggles and Escape") {
     rig.send(character('F'));
     CHECK(rig.state.show_inset);
     rig.send(character('O'));
-    CHECK(rig.state.mirror_method == render::MirrorMethod::Rectangle);
+    CHECK(rig.state.mirror_method == plan::MirrorMethod::Rectangle);
     rig.send(character('O'));
     rig.send(character('O'));
-    CHECK(rig.state.mirror_method == render::MirrorMethod::Oblique);
+    CHECK(rig.state.mirror_method == plan::MirrorMethod::Oblique);
     CHECK_FALSE(rig.state.quit);
     rig.send(key(gl::Key::Escape));
     CHECK(rig.state.quit);
@@ -208,8 +208,8 @@ TEST_CASE("the help lists every effect, and docs/window.md lists every key") {
     for (const std::string& line : lines) {
         all += line + "\n";
     }
-    for (render::Effect effect : render::kAllEffects) {
-        CHECK(all.find(std::string(render::to_string(effect))) != std::string::npos);
+    for (plan::Effect effect : plan::kAllEffects) {
+        CHECK(all.find(std::string(plan::to_string(effect))) != std::string::npos);
     }
     std::ifstream file(std::string(FRUSTUM_SOURCE_DIR) + "/docs/window.md");
     REQUIRE(file.good());
@@ -251,14 +251,14 @@ TEST_CASE("Z X and C V move the recursion's two facing mirrors, each on its own;
 }
 
 TEST_CASE("move_links: a push slides the mirror along its normal, a turn keeps its frame orthonormal") {
-    const auto placed = render::place_facing_links(render_test::showcase_cameras().main.pair,
-                                                   render_test::showcase().world_bounds, render::LinkSet::Mirrors);
+    const auto placed = plan::place_facing_links(render_test::showcase_cameras().main.pair,
+                                                 render_test::showcase().world_bounds, plan::LinkSet::Mirrors);
     REQUIRE_MESSAGE(placed.ok(), placed.error());
-    std::vector<render::ViewLink> links = *placed;
-    render::move_links(links, {{0.5f, 0.0f}, {0.0f, 0.3f}});
+    std::vector<plan::ViewLink> links = *placed;
+    plan::move_links(links, {{0.5f, 0.0f}, {0.0f, 0.3f}});
     const glm::vec3 moved = links[0].entry.origin - (*placed)[0].entry.origin;
     CHECK(glm::length(moved - 0.5f * (*placed)[0].entry.normal()) < 1e-5f);
-    const render::ViewLink& turned = links[1];
+    const plan::ViewLink& turned = links[1];
     CHECK(glm::length(turned.entry.origin - (*placed)[1].entry.origin) < 1e-5f); // about its centre
     CHECK(std::abs(glm::length(turned.entry.x) - 1.0f) < 1e-6f);
     CHECK(std::abs(glm::dot(turned.entry.x, turned.entry.y)) < 1e-6f);

@@ -280,7 +280,7 @@ TEST_CASE("demo options: each option writes the value it was given") {
     }
 }
 
-// The effect rows (demo/effect_options.hpp) write render::EffectParams; the
+// The effect rows (demo/effect_options.hpp) write plan::EffectParams; the
 // values are the option text's, metres where the name says so, written
 // here by hand; exact float equality: each is parsed from the same decimal.
 TEST_CASE("demo options: each effect option writes the value it was given") {
@@ -291,9 +291,9 @@ TEST_CASE("demo options: each effect option writes the value it was given") {
         CHECK(d.tile_columns == 3); // default 3x2
         CHECK(d.tile_rows == 2);
         CHECK(!d.tile_borders);
-        CHECK(d.mirror_method == render::MirrorMethod::Oblique);
+        CHECK(d.mirror_method == plan::MirrorMethod::Oblique);
         CHECK(d.curved.patches == 4);
-        CHECK(d.curved.shape == render::CapShape::Sphere);
+        CHECK(d.curved.shape == plan::CapShape::Sphere);
         CHECK(!d.sagitta_given);
         CHECK(d.lens_grid == 16);
         CHECK(d.lens_power == 2.0f);
@@ -302,7 +302,7 @@ TEST_CASE("demo options: each effect option writes the value it was given") {
         CHECK(d.ipd_m == 0.064f);
         CHECK(!d.convergence_m.has_value());
         CHECK(d.recursion_depth == 4);
-        CHECK(d.recursion_links == render::LinkSet::Mirrors);
+        CHECK(d.recursion_links == plan::LinkSet::Mirrors);
         CHECK(!d.mirror_place.plane.has_value());
         CHECK(!d.mirror_place.rect.has_value());
 
@@ -310,9 +310,9 @@ TEST_CASE("demo options: each effect option writes the value it was given") {
         CHECK(t.tile_columns == 4);
         CHECK(t.tile_rows == 3);
         CHECK(t.tile_borders);
-        CHECK(t.mirror_method == render::MirrorMethod::Rectangle);
+        CHECK(t.mirror_method == plan::MirrorMethod::Rectangle);
         CHECK(t.lens_grid == 16); // untouched
-        CHECK(settings_of(command, {"--mirror", "reflect_only"}).mirror_method == render::MirrorMethod::ReflectOnly);
+        CHECK(settings_of(command, {"--mirror", "reflect_only"}).mirror_method == plan::MirrorMethod::ReflectOnly);
 
         const demo::Settings plane = settings_of(command, {"--mirror-plane", "0,1,0,-0.5"});
         REQUIRE(plane.mirror_place.plane.has_value());
@@ -330,7 +330,7 @@ TEST_CASE("demo options: each effect option writes the value it was given") {
         CHECK(curved.curved.patches == 8);
         CHECK(curved.curved.sagitta_m == 0.1f);
         CHECK(curved.sagitta_given);
-        CHECK(curved.curved.shape == render::CapShape::Cylinder);
+        CHECK(curved.curved.shape == plan::CapShape::Cylinder);
 
         const demo::Settings lens = settings_of(command, {"--lens-grid", "8", "--lens-power", "1.5",
                                                           "--lens-center", "0.1,-0.2", "--lens-radius", "0.3"});
@@ -371,13 +371,13 @@ TEST_CASE("demo options: each effect option writes the value it was given") {
 
         const demo::Settings recursion = settings_of(command, {"--recursion-depth", "2", "--recursion-links", "portals"});
         CHECK(recursion.recursion_depth == 2);
-        CHECK(recursion.recursion_links == render::LinkSet::Portals);
+        CHECK(recursion.recursion_links == plan::LinkSet::Portals);
         CHECK(settings_of(command, {"--recursion-depth", "0"}).recursion_depth == 0);
     }
     // The reports' share of the effect rows.
     const demo::Settings c = settings_of(demo::kCurvedReport, {"--sagitta", "0.25", "--cap", "cylinder"});
     CHECK(c.curved.sagitta_m == 0.25f);
-    CHECK(c.curved.shape == render::CapShape::Cylinder);
+    CHECK(c.curved.shape == plan::CapShape::Cylinder);
     CHECK(settings_of(demo::kLensReport, {"--lens-power", "1.5"}).lens_power == 1.5f);
     const demo::Settings n = settings_of(demo::kNonAffineReport, {"--slit", "2.6", "--pivot", "8"});
     REQUIRE(n.fit.slit_m.has_value());
@@ -407,7 +407,7 @@ TEST_CASE("demo options: --tiles has the same bound in render and window") {
 // The value lists, written here by hand: each accepted value parses to its
 // enum value, a near miss is refused, and the help lists exactly these.
 TEST_CASE("demo options: --effect accepts exactly the effects its help lists, each parsed to its effect") {
-    using Effect = render::Effect; // (app/plan's namespace)
+    using Effect = plan::Effect;
     const std::vector<std::pair<std::string, Effect>> effects = {
         {"plain", Effect::Plain},   {"mirror", Effect::Mirror},       {"tiles", Effect::Tiles},
         {"frustum", Effect::Frustum}, {"curved", Effect::Curved},     {"lens", Effect::Lens},
@@ -424,7 +424,7 @@ TEST_CASE("demo options: --effect accepts exactly the effects its help lists, ea
         for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
         CHECK(outcome(demo::kRender, {"--effect", upper}).rfind("error: unknown effect '" + upper + "'", 0) == 0);
     }
-    CHECK(std::vector<Effect>(std::begin(render::kAllEffects), std::end(render::kAllEffects)) == all);
+    CHECK(std::vector<Effect>(std::begin(plan::kAllEffects), std::end(plan::kAllEffects)) == all);
     CHECK(settings_of(demo::kRender, {"--effect", "all"}).effects == all);
     CHECK(demo::defaults(demo::kRender).effects == all);
     CHECK(demo::defaults(demo::kWindow).effects == std::vector<Effect>{Effect::Plain});

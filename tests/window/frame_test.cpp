@@ -23,7 +23,7 @@ TEST_SUITE("window") {
 
 TEST_CASE("with no camera input the frame uses the scene's main camera pair exactly") {
     const scene::Scene& scene = render_test::showcase();
-    const render::Cameras cameras = render_test::showcase_cameras();
+    const plan::Cameras cameras = render_test::showcase_cameras();
     window::ViewerState state;
     const auto frame = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
     REQUIRE_MESSAGE(frame.ok(), frame.error());
@@ -58,19 +58,19 @@ TEST_CASE("the inset: a third of the width, top-right, the framebuffer's aspect"
     CHECK(rect->y + rect->height == 540 - 8);
     CHECK_FALSE(window::inset_rect(95, 540));
     CHECK_FALSE(window::inset_rect(960, 63));
-    CHECK(window::inset_effect(render::Effect::Plain) == render::Effect::Frustum);
-    CHECK(window::inset_effect(render::Effect::Frustum) == render::Effect::Plain);
+    CHECK(window::inset_effect(plan::Effect::Plain) == plan::Effect::Frustum);
+    CHECK(window::inset_effect(plan::Effect::Frustum) == plan::Effect::Plain);
 }
 
 TEST_CASE("make_cameras: a scene camera takes the image's aspect, so a square stays square") {
     const scene::Scene& scene = render_test::showcase();
-    const int index = *render::find_camera(render_test::showcase(), std::nullopt);
+    const int index = *plan::find_camera(render_test::showcase(), std::nullopt);
     // A square window: the main camera's 16:9 gives way, so a square in the
     // picture stays square: |m00| == |m11| for a symmetric perspective
     // (the view is rigid, so compare the scaled rows' lengths).
-    const auto square = render::make_cameras(scene, index, 300, 300);
+    const auto square = plan::make_cameras(scene, index, 300, 300);
     REQUIRE_MESSAGE(square.ok(), square.error());
-    for (const render::NamedCamera* camera : {&square->main, &square->overview}) {
+    for (const plan::NamedCamera* camera : {&square->main, &square->overview}) {
         const glm::mat4& m = camera->pair.matrix();
         const float row0 = glm::length(glm::vec3(m[0][0], m[1][0], m[2][0]));
         const float row1 = glm::length(glm::vec3(m[0][1], m[1][1], m[2][1]));
@@ -90,7 +90,7 @@ TEST_CASE("camera_pair: an orthographic camera keeps ymag and widens to the imag
     for (const float aspect : {16.0f / 9.0f, 1.0f, 0.5f}) {
         // ... in a 16:9, square or tall image: one world unit is as many
         // pixels across as it is up, so nothing is stretched.
-        const auto pair = render::camera_pair(camera, aspect);
+        const auto pair = plan::camera_pair(camera, aspect);
         REQUIRE_MESSAGE(pair.ok(), pair.error());
         const glm::mat4& m = pair->matrix();
         CAPTURE(aspect);

@@ -33,8 +33,8 @@ TEST_CASE("turning and tilting keep the centre; sliding and pushing move it alon
     pose.turn_rad = 0.3f;
     pose.tilt_rad = -0.2f;
     glm::mat4 motion = window::mirror_motion(mirror, pose);
-    CHECK(render::check_rigid_motion(motion, "test").ok());
-    const scene::MirrorRect turned = render::moved_mirror(mirror, motion);
+    CHECK(plan::check_rigid_motion(motion, "test").ok());
+    const scene::MirrorRect turned = plan::moved_mirror(mirror, motion);
     CHECK(glm::length(center(turned) - center(mirror)) < 1e-5f);
     CHECK(glm::length(turned.a1) == doctest::Approx(glm::length(mirror.a1)).epsilon(kFloatTwoUlps));
     CHECK(glm::length(turned.a2) == doctest::Approx(glm::length(mirror.a2)).epsilon(kFloatTwoUlps));
@@ -42,20 +42,20 @@ TEST_CASE("turning and tilting keep the centre; sliding and pushing move it alon
     pose.slide_m = 0.5f;
     pose.push_m = 0.25f;
     motion = window::mirror_motion(mirror, pose);
-    const scene::MirrorRect moved = render::moved_mirror(mirror, motion);
+    const scene::MirrorRect moved = plan::moved_mirror(mirror, motion);
     const glm::vec3 shift = center(moved) - center(mirror);
     CHECK(glm::dot(shift, glm::normalize(turned.a1)) == doctest::Approx(0.5f).epsilon(1e-4));
     CHECK(glm::dot(shift, glm::normalize(glm::cross(turned.a1, turned.a2))) == doctest::Approx(0.25f).epsilon(1e-4));
 }
 
-TEST_CASE("render::check_rigid_motion names what is wrong") {
-    const auto scaled = render::check_rigid_motion(glm::mat4(2.0f), "where()");
+TEST_CASE("plan::check_rigid_motion names what is wrong") {
+    const auto scaled = plan::check_rigid_motion(glm::mat4(2.0f), "where()");
     REQUIRE_FALSE(scaled.ok());
     CHECK(scaled.error().rfind("where(): motion must be rigid (det 1, orthonormal columns, last row 0 0 0 1), got det=8",
                                0) == 0);
     glm::mat4 mirrored(1.0f);
     mirrored[0][0] = -1.0f;
-    CHECK_FALSE(render::check_rigid_motion(mirrored, "where()").ok());
+    CHECK_FALSE(plan::check_rigid_motion(mirrored, "where()").ok());
 }
 
 TEST_CASE("the showcase's backing board moves with its mirror, nothing else does") {

@@ -32,7 +32,7 @@ float max_abs_difference(const glm::mat4& a, const glm::mat4& b) {
 TEST_SUITE("window") {
 
 TEST_CASE("orbit_from_pair starts at the camera's eye, looking its way") {
-    const render::Cameras cameras = render_test::showcase_cameras();
+    const plan::Cameras cameras = render_test::showcase_cameras();
     const window::OrbitCamera orbit = window::orbit_from_pair(cameras.main.pair, render_test::showcase().world_bounds);
     // assets/README.md: main stands at (0.8, 1.7, 6.5) and looks at the mirror's centre (0, 1.05, -2).
     const glm::vec3 eye = orbit.eye();
@@ -46,9 +46,9 @@ TEST_CASE("orbit_from_pair starts at the camera's eye, looking its way") {
 
 TEST_CASE("the first orbit pair reproduces the scene camera (no roll, same lens)") {
     const scene::Scene& scene = render_test::showcase();
-    const render::Cameras cameras = render_test::showcase_cameras();
+    const plan::Cameras cameras = render_test::showcase_cameras();
     const window::OrbitCamera orbit = window::orbit_from_pair(cameras.main.pair, scene.world_bounds);
-    const window::OrbitProjection projection = window::orbit_projection(scene, *render::find_camera(render_test::showcase(), std::nullopt));
+    const window::OrbitProjection projection = window::orbit_projection(scene, *plan::find_camera(render_test::showcase(), std::nullopt));
     CHECK(projection.yfov_rad == doctest::Approx(50.0 * 3.14159265358979 / 180.0).epsilon(1e-5));
     REQUIRE(projection.near_m);
     CHECK(*projection.near_m == doctest::Approx(0.1f).epsilon(kFloatTwoUlps));

@@ -40,7 +40,7 @@ std::optional<std::string> refusal(const demo::Option& row, const std::string& v
 
 // `value` written as the row's text: each component, joined by its separator.
 std::string row_text(const demo::PanelControl& control, float value) {
-    const std::string one = control.whole ? std::to_string(static_cast<int>(value)) : render::number_text(value);
+    const std::string one = control.whole ? std::to_string(static_cast<int>(value)) : plan::number_text(value);
     std::string text = one;
     for (int i = 1; i < control.components; ++i) {
         text += control.separator + one;
@@ -92,7 +92,7 @@ TEST_CASE("every panel slider spans its row's bounds: its high end is accepted, 
     CHECK(sliders >= 14);
 }
 
-TEST_CASE("every panel choice is accepted by its row; the effect list is render::kAllEffects") {
+TEST_CASE("every panel choice is accepted by its row; the effect list is plan::kAllEffects") {
     for (const demo::Option& row : demo::options()) {
         if (!(row.commands & demo::kWindow) || row.control.kind != demo::PanelControl::Kind::Choice) {
             continue;
@@ -104,7 +104,7 @@ TEST_CASE("every panel choice is accepted by its row; the effect list is render:
         }
         CHECK(refusal(row, "nonsense"));
         if (row.name == "--effect") {
-            CHECK(split(row.control.choices).size() == std::size(render::kAllEffects));
+            CHECK(split(row.control.choices).size() == std::size(plan::kAllEffects));
         }
     }
 }
@@ -159,8 +159,8 @@ TEST_CASE("the scene files beside one: its folder's and the folders' next to it,
 TEST_CASE("live numbers: the camera pair's residual, the mirror's rectangle, a timed pass per planned pair") {
     const scene::Scene& scene = render_test::showcase();
     window::ViewerState state;
-    state.effect = render::Effect::Mirror;
-    const render::Cameras cameras = render_test::showcase_cameras();
+    state.effect = plan::Effect::Mirror;
+    const plan::Cameras cameras = render_test::showcase_cameras();
     const auto mirror = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
     REQUIRE_MESSAGE(mirror.ok(), mirror.error());
     const window::LiveNumbers numbers = window::live_numbers(*mirror, scene);
@@ -168,7 +168,7 @@ TEST_CASE("live numbers: the camera pair's residual, the mirror's rectangle, a t
     CHECK(numbers.residual == doctest::Approx(window::inverse_residual(cameras.main.pair)).epsilon(kFloatTwoUlps));
     CHECK(numbers.residual < 1e-4); // single precision: a few ulps of entries up to ~10 (measured 1.0e-5)
     CHECK(numbers.residual > 0.0);  // ... which is not exact
-    const auto rect = render::mirror_screen_rect(*scene.mirror, cameras.main.pair, 256, 144);
+    const auto rect = plan::mirror_screen_rect(*scene.mirror, cameras.main.pair, 256, 144);
     REQUIRE(rect);
     REQUIRE(numbers.mirror_rect);
     CHECK(numbers.mirror_rect->width == rect->width);
@@ -200,7 +200,7 @@ TEST_CASE("live numbers: the camera pair's residual, the mirror's rectangle, a t
         }
     }
 
-    state.effect = render::Effect::Recursion;
+    state.effect = plan::Effect::Recursion;
     const auto recursion = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
     REQUIRE_MESSAGE(recursion.ok(), recursion.error());
     const window::LiveNumbers deeper = window::live_numbers(*recursion, scene);

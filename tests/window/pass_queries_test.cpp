@@ -41,7 +41,7 @@ render::RenderOptions small_frame() {
 // The counter's rows of one frame of `effect` (single-sample, kWidthPx x
 // kHeightPx), the GPU timer's rows of the same frame into `timed` when
 // given, and the frame's image into `image` when given.
-std::vector<window::FragmentCounter::PassSamples> count_frame(const Rig& rig, render::Effect effect,
+std::vector<window::FragmentCounter::PassSamples> count_frame(const Rig& rig, plan::Effect effect,
                                                               const render::RenderOptions& options,
                                                               std::vector<window::GpuTimer::PassTime>* timed = nullptr,
                                                               image::Image* image = nullptr) {
@@ -100,7 +100,7 @@ std::uint64_t covered_pixels(const image::Image& picture) {
 std::uint64_t triangle_box_bound(const scene::Scene& scene, const frustum::MatrixPair<float>& pair, int width_px,
                                  int height_px) {
     std::uint64_t bound = 0;
-    for (const render::WorldPrimitive& primitive : render::WorldGeometry::from_scene(scene).primitives) {
+    for (const plan::WorldPrimitive& primitive : plan::WorldGeometry::from_scene(scene).primitives) {
         for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
             float x0 = static_cast<float>(width_px), y0 = static_cast<float>(height_px), x1 = 0.0f, y1 = 0.0f;
             bool behind = false;
@@ -146,10 +146,10 @@ TEST_CASE("desktop GL: samples passed per pass, at least the covered pixels, at 
     REQUIRE(counter.available());
     CHECK_FALSE(counter.unavailable_reason());
     const scene::Scene& scene = render_test::showcase();
-    const render::Cameras cameras = render_test::showcase_cameras(kWidthPx, kHeightPx);
+    const plan::Cameras cameras = render_test::showcase_cameras(kWidthPx, kHeightPx);
 
     image::Image plain_image;
-    const auto plain = count_frame(*rig, render::Effect::Plain, small_frame(), nullptr, &plain_image);
+    const auto plain = count_frame(*rig, plan::Effect::Plain, small_frame(), nullptr, &plain_image);
     REQUIRE(names(plain) == std::vector<std::string>{"main view"});
     const std::uint64_t covered = covered_pixels(plain_image);
     const std::uint64_t boxes = triangle_box_bound(scene, cameras.main.pair, kWidthPx, kHeightPx);
@@ -159,13 +159,13 @@ TEST_CASE("desktop GL: samples passed per pass, at least the covered pixels, at 
     CHECK(plain[0].samples >= covered);
     CHECK(plain[0].samples <= boxes);
 
-    const auto mirror = count_frame(*rig, render::Effect::Mirror, small_frame());
+    const auto mirror = count_frame(*rig, plan::Effect::Mirror, small_frame());
     REQUIRE(names(mirror) == std::vector<std::string>{"reflection", "main view"});
-    auto view = render::plan_reflection(*scene.mirror, cameras.main.pair, kWidthPx, kHeightPx,
-                                        render::MirrorMethod::Oblique, scene.world_bounds);
+    auto view = plan::plan_reflection(*scene.mirror, cameras.main.pair, kWidthPx, kHeightPx,
+                                      plan::MirrorMethod::Oblique, scene.world_bounds);
     REQUIRE_MESSAGE(view.ok(), view.error());
     REQUIRE(view->has_value());
-    const render::ReflectionView& reflection = **view;
+    const plan::ReflectionView& reflection = **view;
     const std::uint64_t reflected_boxes =
         triangle_box_bound(scene, reflection.pair, reflection.texture_width_px, reflection.texture_height_px);
     MESSAGE("mirror reflection: " << mirror[0].samples << " samples in a " << reflection.texture_width_px << "x"
@@ -184,20 +184,20 @@ TEST_CASE("OpenGL ES: no fragment counts, the panel's one n/a line, and no GL er
     CHECK_FALSE(counter.available());
     REQUIRE(counter.unavailable_reason());
     CHECK(*counter.unavailable_reason() == "n/a: OpenGL ES occlusion queries are boolean (run with --context gl)");
-    CHECK(count_frame(*rig, render::Effect::Mirror, small_frame()).empty());
+    CHECK(count_frame(*rig, plan::Effect::Mirror, small_frame()).empty());
 }
 
 // The rows expected of the recursion effect, from the plan the renderer
 // draws: "level k (n views)" for each level, deepest first, then "main view".
-std::vector<std::string> planned_rows(render::LinkSet set, int depth) {
+std::vector<std::string> planned_rows(plan::LinkSet set, int depth) {
     const scene::Scene& scene = render_test::showcase();
     const auto camera = render_test::showcase_cameras(kWidthPx, kHeightPx).main.pair;
-    auto links = render::place_facing_links(camera, scene.world_bounds, set);
+    auto links = plan::place_facing_links(camera, scene.world_bounds, set);
     REQUIRE_MESSAGE(links.ok(), links.error());
-    auto nodes = render::plan_view_tree(camera, *links, {depth, kWidthPx, kHeightPx, render::ViewBounds::Tight});
+    auto nodes = plan::plan_view_tree(camera, *links, {depth, kWidthPx, kHeightPx, plan::ViewBounds::Tight});
     REQUIRE_MESSAGE(nodes.ok(), nodes.error());
     std::vector<int> views;
-    for (const render::ViewNode& node : *nodes) {
+    for (const plan::ViewNode& node : *nodes) {
         views.resize(std::max(views.size(), static_cast<std::size_t>(node.level) + 1), 0);
         ++views[static_cast<std::size_t>(node.level)];
     }
@@ -215,15 +215,15 @@ TEST_CASE("recursion: one row per level, deepest first, with samples and GPU tim
     if (!rig) {
         return;
     }
-    for (const render::LinkSet set : {render::LinkSet::Mirrors, render::LinkSet::Portals}) {
-        CAPTURE(render::to_string(set));
+    for (const plan::LinkSet set : {plan::LinkSet::Mirrors, plan::LinkSet::Portals}) {
+        CAPTURE(plan::to_string(set));
         render::RenderOptions o = small_frame();
         o.recursion_links = set;
         o.recursion_depth = 3;
         const std::vector<std::string> expected = planned_rows(set, o.recursion_depth);
         CHECK(expected.size() == 4); // the showcase's camera sees three levels deep
         std::vector<window::GpuTimer::PassTime> timed;
-        const auto rows = count_frame(*rig, render::Effect::Recursion, o, &timed);
+        const auto rows = count_frame(*rig, plan::Effect::Recursion, o, &timed);
         CHECK(names(rows) == expected);
         for (const auto& row : rows) {
             CAPTURE(row.pass);

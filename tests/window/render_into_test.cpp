@@ -30,7 +30,7 @@ render::RenderOptions options() {
     return o;
 }
 
-image::Image render_image(const Rig& rig, render::Effect effect) {
+image::Image render_image(const Rig& rig, plan::Effect effect) {
     auto picture = rig.renderer->render(effect, render_test::showcase_cameras(), options());
     REQUIRE_MESSAGE(picture.ok(), picture.error());
     return std::move(*picture);
@@ -53,8 +53,8 @@ TEST_CASE("render_into an existing target draws what render() returns") {
     }
     auto target = gl::OffscreenTarget::create(*rig->fn, {256, 144});
     REQUIRE_MESSAGE(target.ok(), target.error());
-    for (render::Effect effect : render::kAllEffects) {
-        CAPTURE(render::to_string(effect));
+    for (plan::Effect effect : plan::kAllEffects) {
+        CAPTURE(plan::to_string(effect));
         // Twice into the same target: nothing of the previous frame survives.
         for (int pass = 0; pass < 2; ++pass) {
             REQUIRE(rig->renderer->render_into(effect, render_test::showcase_cameras(), options(), *target).ok());
@@ -71,18 +71,18 @@ TEST_CASE("move_mirror moves the reflection, and the identity puts it back exact
         return;
     }
     const scene::Scene& scene = render_test::showcase();
-    const image::Image before = render_image(*rig, render::Effect::Mirror);
+    const image::Image before = render_image(*rig, plan::Effect::Mirror);
     window::MirrorPose pose;
     pose.turn_rad = 0.26f;
     pose.push_m = 0.3f;
     const std::vector<int> attached = window::mirror_attachments(scene);
     REQUIRE(rig->renderer->move_mirror(window::mirror_motion(*scene.mirror, pose), attached).ok());
-    const image::Image moved = render_image(*rig, render::Effect::Mirror);
+    const image::Image moved = render_image(*rig, plan::Effect::Mirror);
     CHECK(pixels_over(before, moved) > 500);
     // The plain frame shows the moved surface and backing too.
-    CHECK(pixels_over(render_image(*rig, render::Effect::Plain), before) > 0);
+    CHECK(pixels_over(render_image(*rig, plan::Effect::Plain), before) > 0);
     REQUIRE(rig->renderer->move_mirror(glm::mat4(1.0f), attached).ok());
-    CHECK(pixels_over(before, render_image(*rig, render::Effect::Mirror)) == 0);
+    CHECK(pixels_over(before, render_image(*rig, plan::Effect::Mirror)) == 0);
 }
 
 TEST_CASE("move_mirror rejects a bad motion or instance") {
@@ -120,7 +120,7 @@ TEST_CASE("the GPU timer gives the mirror effect's reflection and main passes, p
     o.pass_end = [&timer](const char* pass) { timer.mark(pass); };
     const auto start = std::chrono::steady_clock::now();
     timer.begin();
-    REQUIRE(rig->renderer->render_into(render::Effect::Mirror, render_test::showcase_cameras(), o, *target).ok());
+    REQUIRE(rig->renderer->render_into(plan::Effect::Mirror, render_test::showcase_cameras(), o, *target).ok());
     timer.end();
     rig->fn->Finish();
     const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -35,8 +35,8 @@ using support::TempDir;
 TEST_SUITE("window") {
 
 TEST_CASE("the window's screenshot matches the offscreen renderer for every effect") {
-    for (render::Effect effect : render::kAllEffects) {
-        const std::string name(render::to_string(effect));
+    for (plan::Effect effect : plan::kAllEffects) {
+        const std::string name(plan::to_string(effect));
         CAPTURE(name);
         TempDir dir;
         const std::string shot = (dir / "window.png").string();

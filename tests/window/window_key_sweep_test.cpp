@@ -198,7 +198,7 @@ TEST_CASE("each key of the table changes exactly the setting it names, read back
         CHECK(text(changed(before, now)) == text(expected));
         if (expected.count("effect")) {
             const int n = std::stoi(key);
-            CHECK(now.at("effect") == std::string(render::to_string(render::kAllEffects[n - 1])));
+            CHECK(now.at("effect") == std::string(plan::to_string(plan::kAllEffects[n - 1])));
         }
         if (key == "M") {
             for (const char* name : {"mirror.turn", "mirror.tilt", "mirror.slide", "mirror.push"}) {

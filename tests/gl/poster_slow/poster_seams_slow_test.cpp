@@ -26,8 +26,8 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The whole poster in memory (fine at 4096^2 here; frustum-demo streams it).
-image::Image poster_image(const render_test::RenderEnvironment& r, render::Effect effect,
-                          const render::Cameras& cameras, const render::RenderOptions& o,
+image::Image poster_image(const render_test::RenderEnvironment& r, plan::Effect effect,
+                          const plan::Cameras& cameras, const render::RenderOptions& o,
                           const render::PosterLayout& layout) {
     image::Image out{layout.width_px, layout.height_px,
                      std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) * layout.height_px * 4)};
@@ -44,8 +44,8 @@ image::Image poster_image(const render_test::RenderEnvironment& r, render::Effec
 // A poster `factor` times larger per side, box-filtered down as its rows
 // arrive (sums in linear 8-bit values, as a resize of the PNG would), so
 // only the small image and one row of tiles are in memory.
-image::Image downsampled_poster(const render_test::RenderEnvironment& r, render::Effect effect,
-                                const render::Cameras& cameras, const render::RenderOptions& o, int width_px,
+image::Image downsampled_poster(const render_test::RenderEnvironment& r, plan::Effect effect,
+                                const plan::Cameras& cameras, const render::RenderOptions& o, int width_px,
                                 int height_px, int factor) {
     auto layout = render::poster_layout(r.env->fn, width_px * factor, height_px * factor);
     REQUIRE_MESSAGE(layout.ok(), layout.error());
@@ -78,12 +78,12 @@ constexpr int kSidePx = 4096;
 
 // Every effect, or those FRUSTUM_POSTER_EFFECTS names (comma-separated, e.g.
 // "curved,recursion"), to rerun one.
-std::vector<render::Effect> effects() {
+std::vector<plan::Effect> effects() {
     const char* names = std::getenv("FRUSTUM_POSTER_EFFECTS");
-    std::vector<render::Effect> out;
-    for (render::Effect effect : render::kAllEffects) {
+    std::vector<plan::Effect> out;
+    for (plan::Effect effect : plan::kAllEffects) {
         const std::string list = names ? "," + std::string(names) + "," : "";
-        if (!names || list.find("," + std::string(render::to_string(effect)) + ",") != std::string::npos) {
+        if (!names || list.find("," + std::string(plan::to_string(effect)) + ",") != std::string::npos) {
             out.push_back(effect);
         }
     }
@@ -101,8 +101,8 @@ TEST_CASE("a 4096x4096 poster in 512x512 tiles equals the direct 4096x4096 rende
         return;
     }
     const auto cameras = render_test::showcase_cameras(kSidePx, kSidePx);
-    for (render::Effect effect : effects()) {
-        const std::string name(render::to_string(effect));
+    for (plan::Effect effect : effects()) {
+        const std::string name(plan::to_string(effect));
         INFO(name);
         auto o = render_test::options(kSidePx, kSidePx);
         o.msaa_samples = gl::kAutomaticSamples; // what frustum-demo renders with
@@ -134,8 +134,8 @@ TEST_CASE("a 16384x16384 poster downsampled 4x matches the direct 4096x4096 rend
         return;
     }
     constexpr int kFactor = 4;
-    for (render::Effect effect : effects()) {
-        const std::string name(render::to_string(effect));
+    for (plan::Effect effect : effects()) {
+        const std::string name(plan::to_string(effect));
         INFO(name);
         auto o = render_test::options(kSidePx, kSidePx);
         o.msaa_samples = gl::kAutomaticSamples;
@@ -190,7 +190,7 @@ CropError crop_error(int frame_px) {
         const int tx = std::clamp(static_cast<int>(px.x) / kTilePx * kTilePx, 0, frame_px - kTilePx);
         const int ty = std::clamp(static_cast<int>(px.y) / kTilePx * kTilePx, 0, frame_px - kTilePx);
         auto tile = render::crop_to_window(pair, render::FrameWindow{frame_px, frame_px,
-                                                                     render::PixelRect{tx, ty, kTilePx, kTilePx}});
+                                                                     plan::PixelRect{tx, ty, kTilePx, kTilePx}});
         REQUIRE(tile.ok());
         const glm::dvec2 tile_px = to_px(glm::dvec4(tile->matrix() * world), kTilePx) + glm::dvec2(tx, ty);
         worst.tile_px = std::max(worst.tile_px, glm::length(tile_px - px));
