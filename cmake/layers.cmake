@@ -30,7 +30,7 @@ set(FRUSTUM_LAYERS
   "app/precision:precision plan scene image frustum"
   "app/demo:demo window reference render plan scene gl image frustum"
   "app/web:web window render plan scene gl image frustum"
-  "tests/math:frustum"
+  "tests/math:frustum support"
   "tests/package:frustum"
   "tests/cli:vectors frustum"
   "tests/plan:plan scene image frustum"
