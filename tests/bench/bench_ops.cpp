@@ -56,32 +56,41 @@ CropRect<double> random_rect(std::uint32_t& state) {
     return {x, y, width, height, 1280, 720};
 }
 
+// The depth ranges a benchmark's second argument names (LensTiles_Grid).
+constexpr DepthRange depth_ranges[] = {DepthRange::ZeroToOne, DepthRange::MinusOneToOne,
+                                       DepthRange::ReversedZeroToOne};
+
 template <class T>
-const std::vector<Case<T>>& cases() {
-    static const std::vector<Case<T>> ring = [] {
-        std::vector<Case<T>> out;
-        std::uint32_t state = 7u;
-        for (const auto& c : bench::make_mirror_cases(static_cast<int>(ring_size), DepthRange::ZeroToOne, 99u)) {
-            const auto camera = c.camera.template cast<T>();
-            const CropRect<double> r = random_rect(state);
-            const CropRect<T> crop{T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
-            // A milder crop for the chain: the middle 80-95% of the image.
-            const CropRect<T> chain{T(r.x / 1280 * 0.1), T(r.y / 720 * 0.1), T(0.8 + r.width / 1280 * 0.1),
-                                    T(0.8 + r.height / 720 * 0.1), T(1), T(1)};
-            const Plane<T> plane(frustum::Vec4<T>(c.mirror_plane.normalized().abcd));
-            out.push_back(Case<T>{camera, bench::raw(camera), plane, plane.flipped(),
-                                  {frustum::Vec3<T>(c.rectangle.corner), frustum::Vec3<T>(c.rectangle.a1),
-                                   frustum::Vec3<T>(c.rectangle.a2)},
-                                  frustum::Vec3<T>(c.eye), crop, chain});
-        }
-        return out;
-    }();
-    return ring;
+std::vector<Case<T>> make_ring(DepthRange depth) {
+    std::vector<Case<T>> out;
+    std::uint32_t state = 7u;
+    for (const auto& c : bench::make_mirror_cases(static_cast<int>(ring_size), depth, 99u)) {
+        const auto camera = c.camera.template cast<T>();
+        const CropRect<double> r = random_rect(state);
+        const CropRect<T> crop{T(r.x), T(r.y), T(r.width), T(r.height), T(r.full_width), T(r.full_height)};
+        // A milder crop for the chain: the middle 80-95% of the image.
+        const CropRect<T> chain{T(r.x / 1280 * 0.1), T(r.y / 720 * 0.1), T(0.8 + r.width / 1280 * 0.1),
+                                T(0.8 + r.height / 720 * 0.1), T(1), T(1)};
+        const Plane<T> plane(frustum::Vec4<T>(c.mirror_plane.normalized().abcd));
+        out.push_back(Case<T>{camera, bench::raw(camera), plane, plane.flipped(),
+                              {frustum::Vec3<T>(c.rectangle.corner), frustum::Vec3<T>(c.rectangle.a1),
+                               frustum::Vec3<T>(c.rectangle.a2)},
+                              frustum::Vec3<T>(c.eye), crop, chain});
+    }
+    return out;
+}
+
+// The cameras of `depth` (zero_to_one unless a benchmark names another).
+template <class T>
+const std::vector<Case<T>>& cases(DepthRange depth = DepthRange::ZeroToOne) {
+    static const std::vector<Case<T>> rings[] = {make_ring<T>(depth_ranges[0]), make_ring<T>(depth_ranges[1]),
+                                                 make_ring<T>(depth_ranges[2])};
+    return rings[depth == DepthRange::ZeroToOne ? 0 : depth == DepthRange::MinusOneToOne ? 1 : 2];
 }
 
 template <class T, class F>
-void run(benchmark::State& state, F&& op) {
-    const auto& ring = cases<T>();
+void run(benchmark::State& state, F&& op, DepthRange depth = DepthRange::ZeroToOne) {
+    const auto& ring = cases<T>(depth);
     std::size_t i = 0;
     for (auto _ : state) {
         auto result = op(ring[i]);
@@ -260,11 +269,14 @@ void LensTiles_Grid(benchmark::State& s) {
     const int g = static_cast<int>(s.range(0));
     const auto lens = bench_lens<T>();
     frustum::TileGrid<T> grid;
-    run<T>(s, [g, &lens, &grid](const Case<T>& c) {
-        frustum::Status status = frustum::lens_tiles(c.camera, lens, 1280, 720, g, g, grid);
-        benchmark::ClobberMemory();
-        return status.ok();
-    });
+    run<T>(
+        s,
+        [g, &lens, &grid](const Case<T>& c) {
+            frustum::Status status = frustum::lens_tiles(c.camera, lens, 1280, 720, g, g, grid);
+            benchmark::ClobberMemory();
+            return status.ok();
+        },
+        depth_ranges[s.range(1)]);
     per_tile(s, g * g);
 }
 // Per tile: its matrix built as lens_tiles builds it (the same shared
@@ -386,7 +398,7 @@ void LensTiles_FromPlanesReinvert(benchmark::State& s) {
     BENCHMARK_TEMPLATE(crop_tiles_reinvert, T, bench::EigenInverse)                                  \
         ->Name("CropTiles_Eigen<" #T ">")->Arg(8)->Arg(16)->Arg(32);                                 \
     BENCHMARK_TEMPLATE(LensTiles_Analytic, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                     \
-    BENCHMARK_TEMPLATE(LensTiles_Grid, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);                         \
+    BENCHMARK_TEMPLATE(LensTiles_Grid, T)->ArgsProduct({{4, 8, 16, 32}, {0, 1, 2}})->ArgNames({"", "depth"}); \
     BENCHMARK_TEMPLATE(LensTiles_FromPlanesReinvert, T)->Arg(4)->Arg(8)->Arg(16)->Arg(32);           \
     BENCHMARK_TEMPLATE(lens_tiles_reinvert, T, bench::GlmInverse)                                    \
         ->Name("LensTiles_Reinvert<" #T ">")->Arg(4)->Arg(8)->Arg(16)->Arg(32);                      \

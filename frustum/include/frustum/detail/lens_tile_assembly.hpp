@@ -30,8 +30,9 @@
 //   m0 = (c1 x c3) / d, m1 = (c3 x c0) / d, m3 = (c0 x c1) / d,
 //   d = det(c0, c1, c3) (xyz parts),
 // and m2 = z_n m3 + beta N (eq. 11, N the refraction plane, unit; the
-// plane through c0, c1, c3 with m2 . c2 = 1, formed from N, which the
-// corners lie on: the direct form, from the columns' w, cancels). So M and
+// plane through c0, c1, c3 with m2 . c2 = 1). With z_n = 0 that is beta N
+// alone; otherwise the sum cancels and m2 is formed from the columns' w
+// (lens_tile_rows). So M and
 // M^-1 agree to rounding (the residual |M M^-1 - I| of §4's plane
 // intersections, at a fraction of their cost). The far plane (§4.1, eq. 12
 // with the tile's four far points r X_i, r = far / near distance): the
@@ -159,7 +160,21 @@ FRUSTUM_LENS_INLINE inline bool lens_tile_rows(const V4<T>* c, const LensTileSha
     rows.c[0] = times<T>(k0, inv);
     rows.c[1] = times<T>(k1, inv);
     rows.c[3] = times<T>(k3, inv);
-    rows.c[2] = times<T>(rows.c[3], shared.z_near) + shared.far_row;
+    if (shared.z_near == T(0)) {
+        rows.c[2] = shared.far_row; // eq. 11 with z_n = 0: m2 = beta N
+    } else {
+        // Where z_n != 0, z_n m3 + beta N nearly cancels (reversed: m2 =
+        // m3 - |beta| N), and the rounding of m3 and N, large against m2
+        // itself, made |M M^-1 - I| 1.2-5x the exact inverse's. The same row
+        // from its definition instead: m2 . c_j = 0 for j = 0, 1, 3 and
+        // m2 . c2 = m2_w lambda = 1, so with m2_w = beta N_w = 1 / lambda
+        // and m0, m1, m3 the dual basis of c0, c1, c3 (w = 0),
+        //   m2 = (-m2_w (c0_w m0 + c1_w m1 + c3_w m3), m2_w)
+        // (docs/performance.md "Lens tiles from points").
+        const T m2_w = shared.far_row[3];
+        const V4<T> xyz = (times<T>(rows.c[0], c0[3]) + times<T>(rows.c[1], c1[3])) + times<T>(rows.c[3], c3[3]);
+        rows.c[2] = times<T>(xyz, -m2_w) + V4<T>{T(0), T(0), T(0), m2_w};
+    }
     return true;
 }
 
