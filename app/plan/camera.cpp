@@ -107,7 +107,7 @@ frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& cam
     // stretched): the vertical extent (yfov, ymag) is kept and the
     // horizontal one follows, xmag = ymag * image_aspect.
     frustum::Result<frustum::MatrixPair<float>> projection =
-        frustum::Error{"render::camera_pair(): camera '" + camera.name + "': orthographic camera without zfar"};
+        frustum::Error{"plan::camera_pair(): camera '" + camera.name + "': orthographic camera without zfar"};
     if (camera.kind == scene::Camera::Kind::Perspective) {
         projection = frustum::perspective<float>(camera.yfov_rad, image_aspect, camera.znear_m, camera.zfar_m, depth);
     } else if (camera.zfar_m) {
@@ -116,7 +116,7 @@ frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& cam
                                                   camera.znear_m, *camera.zfar_m, depth);
     }
     if (!projection) {
-        return frustum::Error{"render::camera_pair(): camera '" + camera.name + "': " + projection.error()};
+        return frustum::Error{"plan::camera_pair(): camera '" + camera.name + "': " + projection.error()};
     }
     // camera_to_world = [R | t] is rigid (scene.hpp), so world_to_camera = [R^T | -R^T t].
     const glm::mat3 rotation_transposed = glm::transpose(glm::mat3(camera.camera_to_world));
@@ -138,14 +138,14 @@ frustum::Result<frustum::MatrixPair<float>> framing_camera(const scene::Bounds& 
     const glm::vec3 eye = center + glm::normalize(from_direction) * distance_m;
     auto view = frustum::look_at<float>(eye, center, glm::vec3(0.0f, 1.0f, 0.0f));
     if (!view) {
-        return view.take_error_in("render::framing_camera()");
+        return view.take_error_in("plan::framing_camera()");
     }
     // distance > radius (sin < 1), so near > 0.
     const float near_m = (distance_m - radius_m) * 0.5f;
     const float far_m = distance_m + radius_m * 2.0f;
     auto projection = frustum::perspective<float>(kFramingFovyRad, aspect, near_m, far_m, frustum::DepthRange::ZeroToOne);
     if (!projection) {
-        return projection.take_error_in("render::framing_camera()");
+        return projection.take_error_in("plan::framing_camera()");
     }
     return frustum::compose(*projection, *view);
 }
@@ -164,7 +164,7 @@ frustum::Result<int> find_camera(const scene::Scene& scene, const std::optional<
             return index;
         }
     }
-    return frustum::Error{"render::find_camera(): no camera '" + *selector + "'; " + camera_list(scene)};
+    return frustum::Error{"plan::find_camera(): no camera '" + *selector + "'; " + camera_list(scene)};
 }
 
 frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera, int width_px, int height_px) {

@@ -34,7 +34,7 @@ frustum::Result<frustum::MatrixPair<float>> framing_camera(const scene::Bounds& 
 // The index into scene.cameras that `selector` names: a camera's name, else
 // its node's name, else a decimal index. Without a selector: the camera
 // named "main", else camera 0; -1 when the scene has no cameras. Errors:
-//   "render::find_camera(): no camera 'x'; the scene's cameras are: main, overview"
+//   "plan::find_camera(): no camera 'x'; the scene's cameras are: main, overview"
 frustum::Result<int> find_camera(const scene::Scene& scene, const std::optional<std::string>& selector);
 
 struct NamedCamera {

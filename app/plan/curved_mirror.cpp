@@ -13,7 +13,7 @@
 namespace plan {
 namespace {
 
-constexpr const char* kCreate = "render::CurvedMirror::create(): ";
+constexpr const char* kCreate = "plan::CurvedMirror::create(): ";
 // The least objective a patch frustum may have (F = sum of four cos^2, 4 =
 // exact): about 9 degrees between each side plane and its target. Below it
 // the reflected volume is no frustum-like pyramid, e.g. one wider than 180
@@ -231,7 +231,7 @@ frustum::VolumeTarget<double> patch_target(const CurvedMirror& mirror, const glm
 frustum::Result<std::optional<CurvedPlan>> plan_curved_mirror(const CurvedMirror& mirror, const glm::dvec3& eye,
                                                               const scene::Bounds& bounds, int grid) {
     if (grid < 1 || grid > kMaxCurvedPatches) {
-        return frustum::Error{"render::plan_curved_mirror(): the patch grid must be 1.." +
+        return frustum::Error{"plan::plan_curved_mirror(): the patch grid must be 1.." +
                               std::to_string(kMaxCurvedPatches) + ", got " + std::to_string(grid)};
     }
     if (!(glm::dot(eye - mirror.base_center(), mirror.base_normal()) > 0.0)) {

@@ -15,7 +15,7 @@
 namespace plan {
 namespace {
 
-constexpr const char* kPlan = "render::plan_reflection(): ";
+constexpr const char* kPlan = "plan::plan_reflection(): ";
 // Largest reflection texture side for the rectangle method (GL ES 3.0
 // guarantees 2048; llvmpipe and current phones allow 4096 or more, and
 // OffscreenTarget::create() checks the real limit).

@@ -122,7 +122,7 @@ std::optional<std::string> place_mirror(scene::Scene& scene, const MirrorRequest
     float side_m = 0.0f, floor_y = 0.0f;
     const scene::MirrorRect floor = floor_mirror(b, side_m, floor_y);
     if (camera && frustum::eye_point(*camera)) {
-        auto a = view_anchor(*camera, b, instance_boxes(scene), "render::place_mirror()");
+        auto a = view_anchor(*camera, b, instance_boxes(scene), "plan::place_mirror()");
         if (a && (a->inside || fraction_in_view(*camera, floor) < kMinFloorInView)) {
             // a1 x a2 = R x (R x f) = -f: it faces the eye.
             add_mirror_instance(scene, centered(a->point, a->half_width_m * a->right, a->half_height_m * a->view_up));

@@ -23,7 +23,7 @@ frustum::Plane<float> outward_plane(const glm::vec3& a, const glm::vec3& b, cons
 frustum::Result<frustum::NonAffineFrustum<float>> crossed_slits_frustum(const frustum::MatrixPair<float>& camera,
                                                                         const NonAffineOptions& options,
                                                                         frustum::DepthRange depth) {
-    constexpr const char* kWhere = "render::crossed_slits_frustum()";
+    constexpr const char* kWhere = "plan::crossed_slits_frustum()";
     const auto frame = frustum::near_plane_frame(camera);
     if (!frame) {
         return frame.take_error_in(kWhere);

@@ -14,7 +14,7 @@ frustum::Result<CameraFrame> camera_frame(const frustum::MatrixPair<float>& came
     const frustum::KeyPoints<double> k = frustum::key_points(pair);
     const glm::dvec4 eye = frustum::to_point(k.eye, frustum::infinity_tolerance<double>());
     if (eye.w != 1.0) {
-        return frustum::Error{"render::camera_frame(): stereo needs a perspective camera (finite eye)"};
+        return frustum::Error{"plan::camera_frame(): stereo needs a perspective camera (finite eye)"};
     }
     // Near corners C1 (1,1), C2 (-1,1), C3 (-1,-1), C4 (1,-1) (eq. 8).
     glm::dvec3 near[4];
@@ -49,12 +49,12 @@ frustum::Result<StereoEyes> stereo_eyes(const frustum::MatrixPair<float>& camera
     }
     const CameraFrame& f = *frame;
     if (!(rig.ipd_m >= 0.0f) || !std::isfinite(rig.ipd_m)) {
-        return frustum::Error{"render::stereo_eyes(): interpupillary distance must be a finite length >= 0 m, got " +
+        return frustum::Error{"plan::stereo_eyes(): interpupillary distance must be a finite length >= 0 m, got " +
                               number_text(rig.ipd_m)};
     }
     const double convergence_m = rig.convergence_m;
     if (!(convergence_m > f.near_m) || !std::isfinite(convergence_m) || (f.far_m && !(convergence_m < *f.far_m))) {
-        return frustum::Error{"render::stereo_eyes(): convergence " + number_text(convergence_m) +
+        return frustum::Error{"plan::stereo_eyes(): convergence " + number_text(convergence_m) +
                               " m must be beyond the near plane (" + number_text(f.near_m) + " m)" +
                               (f.far_m ? " and before the far plane (" + number_text(*f.far_m) + " m)" : std::string())};
     }
@@ -67,7 +67,7 @@ frustum::Result<StereoEyes> stereo_eyes(const frustum::MatrixPair<float>& camera
                                                        f.eye + side * half_ipd_m * f.right, f.near_m, f.far_m,
                                                        camera.depth());
         if (!pair) {
-            return pair.take_error_in("render::stereo_eyes()");
+            return pair.take_error_in("plan::stereo_eyes()");
         }
         return pair->cast<float>();
     };

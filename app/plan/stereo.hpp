@@ -38,7 +38,7 @@ struct CameraFrame {
 };
 
 // Errors: a camera without a finite eye (orthographic), e.g.
-// "render::camera_frame(): stereo needs a perspective camera (finite eye)".
+// "plan::camera_frame(): stereo needs a perspective camera (finite eye)".
 frustum::Result<CameraFrame> camera_frame(const frustum::MatrixPair<float>& camera);
 
 struct StereoEyes {

@@ -201,7 +201,7 @@ std::optional<LinkSet> parse_link_set(std::string_view text) {
 frustum::Result<std::vector<ViewLink>> place_portal_pair(const frustum::MatrixPair<float>& camera,
                                                          const scene::Bounds& bounds,
                                                          const std::vector<scene::Bounds>& boxes) {
-    auto a = view_anchor(camera, bounds, boxes, "render::place_portal_pair()");
+    auto a = view_anchor(camera, bounds, boxes, "plan::place_portal_pair()");
     if (!a) {
         return frustum::Error{a.error()};
     }
@@ -218,7 +218,7 @@ frustum::Result<std::vector<ViewLink>> place_portal_pair(const frustum::MatrixPa
 frustum::Result<std::vector<ViewLink>> place_facing_links(const frustum::MatrixPair<float>& camera,
                                                           const scene::Bounds& bounds, LinkSet set,
                                                           const std::vector<scene::Bounds>& boxes) {
-    auto a = view_anchor(camera, bounds, boxes, "render::place_facing_links()");
+    auto a = view_anchor(camera, bounds, boxes, "plan::place_facing_links()");
     if (!a) {
         return frustum::Error{a.error()};
     }

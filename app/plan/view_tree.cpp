@@ -104,14 +104,14 @@ struct Planner {
             if (nothing_visible(!culling ? culling.error() : full.error())) {
                 return false;
             }
-            return frustum::Error{"render::plan_view_tree(): level " + std::to_string(node.level + 1) + ": " +
+            return frustum::Error{"plan::plan_view_tree(): level " + std::to_string(node.level + 1) + ": " +
                                   (!culling ? culling.error() : full.error())};
         }
         auto unclipped = frustum::uncrop(culling->pair, rect);
         auto cropped = frustum::crop(*full, rect);
         auto surface = frustum::crop(node.unclipped, rect);
         if (!unclipped || !cropped || !surface) {
-            return frustum::Error{"render::plan_view_tree(): " +
+            return frustum::Error{"plan::plan_view_tree(): " +
                                   (!unclipped ? unclipped.error() : !cropped ? cropped.error() : surface.error())};
         }
         ViewNode child(*full);
@@ -151,11 +151,11 @@ frustum::Result<std::vector<ViewNode>> plan_view_tree(const frustum::MatrixPair<
 frustum::Result<ViewTreePlan> plan_views(const frustum::MatrixPair<float>& camera, const std::vector<ViewLink>& links,
                                          const ViewTreeRequest& request) {
     if (request.depth < 0 || request.depth > kMaxRecursionDepth) {
-        return frustum::Error{"render::plan_view_tree(): depth " + std::to_string(request.depth) +
+        return frustum::Error{"plan::plan_view_tree(): depth " + std::to_string(request.depth) +
                               " must be in 0..8"};
     }
     if (request.width_px < 1 || request.height_px < 1) {
-        return frustum::Error{"render::plan_view_tree(): image " + std::to_string(request.width_px) + "x" +
+        return frustum::Error{"plan::plan_view_tree(): image " + std::to_string(request.width_px) + "x" +
                               std::to_string(request.height_px) + " must be at least 1x1 pixels"};
     }
     const float w = static_cast<float>(request.width_px), h = static_cast<float>(request.height_px);

@@ -85,7 +85,7 @@ frustum::Result<std::vector<InstanceTriangles>> collect(const scene::Scene& scen
             const scene::Material material =
                 p.material >= 0 ? scene.materials[static_cast<std::size_t>(p.material)] : scene::Material{};
             if (material.base_color_texture >= 0) {
-                return frustum::Error{"render::trace_curved_frame(): material '" + material.name +
+                return frustum::Error{"reference::trace_curved_frame(): material '" + material.name +
                                       "' has a texture; the reference shades untextured materials only"};
             }
             const auto world = [&](std::uint32_t i) { return glm::dvec3(model * glm::dvec4(p.positions[i], 1.0)); };
@@ -235,7 +235,7 @@ frustum::Result<TracedFrame> trace_curved_frame(const scene::Scene& scene, const
                                                 const frustum::MatrixPair<float>& camera, int width_px, int height_px,
                                                 const TraceSettings& settings) {
     if (width_px < 1 || height_px < 1) {
-        return frustum::Error{"render::trace_curved_frame(): the image must be at least 1x1, got " +
+        return frustum::Error{"reference::trace_curved_frame(): the image must be at least 1x1, got " +
                               std::to_string(width_px) + "x" + std::to_string(height_px)};
     }
     auto triangles = collect(scene);

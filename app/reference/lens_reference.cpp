@@ -17,7 +17,7 @@
 namespace reference {
 namespace {
 
-constexpr const char* kWhere = "render::draw_lens_reference()";
+constexpr const char* kWhere = "reference::draw_lens_reference()";
 
 // shaders/lens_remap.*: the per-pixel lens reference (eq. 34 in GLSL). Only
 // this reference uses it, so it is built here, not by every Renderer.

@@ -101,7 +101,7 @@ TEST_CASE("a cap with a bad sagitta is rejected") {
     CHECK_FALSE(plan::CurvedMirror::create(showcase_mirror(), plan::CapShape::Sphere, -0.1).ok());
     const auto too_deep = plan::CurvedMirror::create(showcase_mirror(), plan::CapShape::Sphere, 1.0);
     REQUIRE_FALSE(too_deep.ok());
-    CHECK(too_deep.error() == "render::CurvedMirror::create(): sagitta must be in [0, 0.901388] m (half the "
+    CHECK(too_deep.error() == "plan::CurvedMirror::create(): sagitta must be in [0, 0.901388] m (half the "
                               "distance from the centre to the rim), got 1.000000");
 }
 

@@ -444,7 +444,7 @@ TEST_CASE("plan_view_tree: depth 0 is the camera alone, and the depth is checked
     CHECK(none->size() == 1);
     auto bad = plan::plan_view_tree(camera, *links, {9, kW, kH, plan::ViewBounds::Tight});
     REQUIRE_FALSE(bad.ok());
-    CHECK(bad.error() == "render::plan_view_tree(): depth 9 must be in 0..8");
+    CHECK(bad.error() == "plan::plan_view_tree(): depth 9 must be in 0..8");
     // Each level's rectangle lies inside its parent's.
     auto tree = plan::plan_view_tree(camera, *links, {6, kW, kH, plan::ViewBounds::Tight});
     REQUIRE(tree.ok());

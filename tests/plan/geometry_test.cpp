@@ -33,7 +33,7 @@ TEST_CASE("cameras are found by name, node name or index, and placed by their no
     CHECK(*plan::find_camera(s, std::string("1")) == 1);
     const auto missing = plan::find_camera(s, std::string("2"));
     REQUIRE_FALSE(missing.ok());
-    CHECK(missing.error() == "render::find_camera(): no camera '2'; the scene's cameras are: main, overview");
+    CHECK(missing.error() == "plan::find_camera(): no camera '2'; the scene's cameras are: main, overview");
     // The view is the closed-form inverse of camera_to_world: the eye read
     // back from the pair (§3.2, O = m2') is the camera node's translation.
     const auto eye = frustum::eye_point(render_test::showcase_cameras().main.pair);

@@ -97,7 +97,7 @@ const std::vector<DemoCase>& demo_cases() {
         {"--ipd-m -1", render({"--ipd-m", "-1"}), 2, {"--ipd-m must be a distance in [0, 10] metres, got '-1'"},
          Out::NotCreated},
         {"--convergence-m before the near plane", render({"--stereo", "--convergence-m", "0.01", "--size", "64x36"}), 1,
-         {"frustum-demo: error: render::stereo_eyes(): convergence 0.01 m must be beyond the near plane"},
+         {"frustum-demo: error: plan::stereo_eyes(): convergence 0.01 m must be beyond the near plane"},
          Out::NoFiles},
         {"--sagitta too large for the mirror", render({"--effect", "curved", "--sagitta", "50", "--size", "64x36"}), 2,
          {"--sagitta 50 must be in [0, "}, Out::NotCreated},
