@@ -47,8 +47,11 @@ std::optional<std::vector<T>> parse_list(const std::string& text, Accept accept)
 std::optional<std::vector<gl::KeyPressed>> parse_keys(std::string_view text) {
     std::vector<gl::KeyPressed> keys;
     while (!text.empty()) {
-        // "," alone is the comma key only as the last item; items are split at the first comma after their first character.
-        const std::size_t comma = text.find(',', 1);
+        // Items are split at the first comma after their first key character
+        // (after "Shift+" if they start with it), so "," and "Shift+," are the
+        // comma key.
+        const std::size_t key_start = text.substr(0, 6) == "Shift+" ? 6 : 0;
+        const std::size_t comma = text.find(',', key_start + 1);
         std::string_view item = text.substr(0, comma);
         text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
         gl::KeyPressed key;
