@@ -386,14 +386,17 @@ TEST_CASE("render --effect mirror --mirror-rect and --mirror-plane: the scene re
     write_scene(dir.path(), squares);
 
     // --mirror-rect: centre (0, 0, -6), sides (3, 0, 0) and (0, 2, 0) (a x b = +z, towards the eye).
-    const image::Image rect = render(dir.path(), "mirror", {"--mirror-rect", "0,0,-6,3,0,0,0,2,0"});
-    {
-        const std::vector<glm::dvec2> blobs = red_blobs(rect);
+    // Every square and its reflection where GLM projects them.
+    const auto check_squares = [&expected](const image::Image& frame, const std::string& option) {
+        const std::vector<glm::dvec2> blobs = red_blobs(frame);
         CHECK(blobs.size() == expected.size());
         const std::vector<double> found = match(expected, blobs);
-        MESSAGE("--mirror-rect: largest distance from the projected squares and reflections " << largest(found)
-                                                                                            << " px");
-        CHECK(largest(found) < 0.25); // measured 0.15 px
+        MESSAGE(option << ": largest distance from the projected squares and reflections " << largest(found) << " px");
+        CHECK(largest(found) < 0.25); // measured 0.15 px with either option
+    };
+    const image::Image rect = render(dir.path(), "mirror", {"--mirror-rect", "0,0,-6,3,0,0,0,2,0"});
+    {
+        check_squares(rect, "--mirror-rect");
         // The mirror's own pixels (the sky reflected, tinted: not the sky,
         // not red) inside the rectangle's projection, corners c +- a/2 +- b/2.
         glm::dvec2 lo(1e9), hi(-1e9);
@@ -428,15 +431,7 @@ TEST_CASE("render --effect mirror --mirror-rect and --mirror-plane: the scene re
         CHECK(missing == 0);
     }
     // --mirror-plane: the same plane (a square about the foot of the model's centre).
-    const image::Image on_plane = render(dir.path(), "mirror", {"--mirror-plane", "0,0,1,6"});
-    {
-        const std::vector<glm::dvec2> blobs = red_blobs(on_plane);
-        CHECK(blobs.size() == expected.size());
-        const std::vector<double> found = match(expected, blobs);
-        MESSAGE("--mirror-plane: largest distance from the projected squares and reflections " << largest(found)
-                                                                                             << " px");
-        CHECK(largest(found) < 0.25); // measured 0.15 px
-    }
+    check_squares(render(dir.path(), "mirror", {"--mirror-plane", "0,0,1,6"}), "--mirror-plane");
 }
 
 } // TEST_SUITE
