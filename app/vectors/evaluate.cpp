@@ -157,43 +157,46 @@ std::string text(const Vec3& p) {
 
 Outcome failure(const std::string& id, std::string error) { return Outcome{id, std::nullopt, std::move(error)}; }
 
-} // namespace
-
-Outcome evaluate_case(const Case& c) {
+// The case's camera, composed with its view (M = P V), then its ops in order.
+PairResult case_pair(const Case& c) {
     auto pair = make_camera(c.camera, c.depth);
     if (!pair) {
-        return failure(c.id, std::string("camera.") + camera_name(c.camera) + ": " + pair.error());
+        return frustum::Error{std::string("camera.") + camera_name(c.camera) + ": " + pair.error()};
     }
     if (c.view) {
         const auto view = frustum::look_at(c.view->eye, c.view->target, c.view->up);
         if (!view) {
-            return failure(c.id, "view: " + view.error());
+            return frustum::Error{"view: " + view.error()};
         }
         pair = frustum::compose(*pair, *view); // M = P V
     }
     for (std::size_t i = 0; i < c.ops.size(); ++i) {
         auto next = apply_op(*pair, c.ops[i]);
         if (!next) {
-            return failure(c.id, "ops[" + std::to_string(i) + "]." + op_key(c.ops[i]) + ": " + next.error());
+            return frustum::Error{"ops[" + std::to_string(i) + "]." + op_key(c.ops[i]) + ": " + next.error()};
         }
         pair = std::move(next);
     }
+    return pair;
+}
 
-    Answer a;
-    a.matrix = pair->matrix();
-    a.inverse = pair->inverse();
+// What every answer has: the matrix and its inverse, the unit planes, the
+// key points and the validity.
+frustum::Status answer_pair(const Pair& pair, Answer& a) {
+    a.matrix = pair.matrix();
+    a.inverse = pair.inverse();
     if (!finite(a.matrix) || !finite(a.inverse)) {
-        return failure(c.id, std::string("result: ") + (finite(a.matrix) ? "inverse" : "matrix") +
-                                 " has a non-finite entry (the frustum is too large or too thin to represent)");
+        return frustum::Error{std::string("result: ") + (finite(a.matrix) ? "inverse" : "matrix") +
+                              " has a non-finite entry (the frustum is too large or too thin to represent)"};
     }
-    auto planes = unit_planes(*pair);
+    auto planes = unit_planes(pair);
     if (!planes) {
-        return failure(c.id, planes.error());
+        return frustum::Error{planes.error()};
     }
     a.planes = *planes;
 
     const double tolerance = frustum::infinity_tolerance<double>();
-    const frustum::KeyPoints<double> points = frustum::key_points(*pair);
+    const frustum::KeyPoints<double> points = frustum::key_points(pair);
     for (int i = 0; i < 8; ++i) {
         a.corners[static_cast<std::size_t>(i)] = frustum::to_point(points.corners[static_cast<std::size_t>(i)], tolerance);
     }
@@ -201,52 +204,94 @@ Outcome evaluate_case(const Case& c) {
     a.eye = frustum::to_point(points.eye, tolerance);
     a.vanishing_y = frustum::to_point(points.vanishing_y, tolerance);
     a.vanishing_x = frustum::to_point(points.vanishing_x, tolerance);
-    a.valid = frustum::validate(*pair).valid();
+    a.valid = frustum::validate(pair).valid();
+    return {};
+}
 
-    if (c.points) {
-        a.clip.emplace();
-        a.inside.emplace();
-        for (std::size_t i = 0; i < c.points->size(); ++i) {
-            const Vec3& p = (*c.points)[i];
-            if (!finite(Vec4(p, 1.0))) {
-                return failure(c.id, "points[" + std::to_string(i) + "]: coordinates must be finite, got " + text(p));
-            }
-            a.clip->push_back(a.matrix * Vec4(p, 1.0));
-            a.inside->push_back(inside(a.planes, p));
+// "points": M [p, 1] and the inside test of each (after answer_pair()).
+frustum::Status answer_points(const std::vector<Vec3>& points, Answer& a) {
+    a.clip.emplace();
+    a.inside.emplace();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3& p = points[i];
+        if (!finite(Vec4(p, 1.0))) {
+            return frustum::Error{"points[" + std::to_string(i) + "]: coordinates must be finite, got " + text(p)};
         }
+        a.clip->push_back(a.matrix * Vec4(p, 1.0));
+        a.inside->push_back(inside(a.planes, p));
     }
-    if (c.rects) {
-        a.screen_rects.emplace();
-        for (std::size_t i = 0; i < c.rects->size(); ++i) {
-            const RectQuery& q = (*c.rects)[i];
-            const auto rect = frustum::screen_rect(*pair, q.corners, q.full_width, q.full_height);
-            if (!rect) {
-                return failure(c.id, "rects[" + std::to_string(i) + "]: " + rect.error());
-            }
-            a.screen_rects->push_back(*rect);
+    return {};
+}
+
+// "rects": each polygon's pixel rectangle.
+frustum::Status answer_rects(const Pair& pair, const std::vector<RectQuery>& rects, Answer& a) {
+    a.screen_rects.emplace();
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        const RectQuery& q = rects[i];
+        const auto rect = frustum::screen_rect(pair, q.corners, q.full_width, q.full_height);
+        if (!rect) {
+            return frustum::Error{"rects[" + std::to_string(i) + "]: " + rect.error()};
         }
+        a.screen_rects->push_back(*rect);
     }
-    if (c.boxes) {
-        a.cull.emplace();
-        const frustum::FrustumPlanes<double> unit = frustum::planes(*pair);
-        for (std::size_t i = 0; i < c.boxes->size(); ++i) {
-            const BoxQuery& b = (*c.boxes)[i];
-            if (!finite(Vec4(b.min, 1.0)) || !finite(Vec4(b.max, 1.0))) {
-                return failure(c.id, "boxes[" + std::to_string(i) + "]: min and max must be finite, got min=" +
-                                         text(b.min) + " max=" + text(b.max));
-            }
-            if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) {
-                return failure(c.id, "boxes[" + std::to_string(i) + "]: min must not exceed max, got min=" +
-                                         text(b.min) + " max=" + text(b.max));
-            }
-            a.cull->push_back(frustum::to_string(frustum::classify(unit, frustum::Aabb<double>{b.min, b.max})));
+    return {};
+}
+
+// "boxes": each box's cull word.
+frustum::Status answer_boxes(const Pair& pair, const std::vector<BoxQuery>& boxes, Answer& a) {
+    a.cull.emplace();
+    const frustum::FrustumPlanes<double> unit = frustum::planes(pair);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const BoxQuery& b = boxes[i];
+        if (!finite(Vec4(b.min, 1.0)) || !finite(Vec4(b.max, 1.0))) {
+            return frustum::Error{"boxes[" + std::to_string(i) + "]: min and max must be finite, got min=" +
+                                  text(b.min) + " max=" + text(b.max)};
         }
+        if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) {
+            return frustum::Error{"boxes[" + std::to_string(i) + "]: min must not exceed max, got min=" +
+                                  text(b.min) + " max=" + text(b.max)};
+        }
+        a.cull->push_back(frustum::to_string(frustum::classify(unit, frustum::Aabb<double>{b.min, b.max})));
+    }
+    return {};
+}
+
+// The answer of a case whose pair was built: every part it asks for, in
+// the contract's order, then the check that all of it is representable.
+frustum::Result<Answer> answer_case(const Case& c, const Pair& pair) {
+    Answer a;
+    frustum::Status status = answer_pair(pair, a);
+    if (status && c.points) {
+        status = answer_points(*c.points, a);
+    }
+    if (status && c.rects) {
+        status = answer_rects(pair, *c.rects, a);
+    }
+    if (status && c.boxes) {
+        status = answer_boxes(pair, *c.boxes, a);
+    }
+    if (!status) {
+        return status.take_error();
     }
     if (const char* field = non_finite_field(a)) {
-        return failure(c.id, std::string("result: ") + field +
-                                 " is not representable in double (the frustum is too large or too thin)");
+        return frustum::Error{std::string("result: ") + field +
+                              " is not representable in double (the frustum is too large or too thin)"};
     }
-    return Outcome{c.id, std::move(a), {}};
+    return a;
+}
+
+} // namespace
+
+Outcome evaluate_case(const Case& c) {
+    const auto pair = case_pair(c);
+    if (!pair) {
+        return failure(c.id, pair.error());
+    }
+    auto answer = answer_case(c, *pair);
+    if (!answer) {
+        return failure(c.id, answer.error());
+    }
+    return Outcome{c.id, std::move(*answer), {}};
 }
 
 } // namespace vectors
