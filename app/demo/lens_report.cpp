@@ -7,6 +7,43 @@
 
 namespace demo {
 
+namespace {
+
+// How far the reference itself is from converged: the same at twice the
+// supersampling ("-" above 8x).
+frustum::Result<std::string> reference_self_check(ReportSession& s, const render::PassContext& ctx,
+                                                  const render::LensDraw& draw, const image::Image& reference,
+                                                  int supersampling) {
+    if (2 * supersampling > 8) {
+        return std::string("-");
+    }
+    if (auto drawn = reference::draw_lens_reference(ctx, *s.frame, draw, 2 * supersampling); !drawn) {
+        return drawn.take_error();
+    }
+    auto finer = s.read();
+    if (!finer) {
+        return finer.take_error();
+    }
+    const reference::MirrorError e = picture_error(reference, *finer, kWarpThresholdLsb);
+    return fixed(e.mean_abs, 2) + " LSB mean, " + std::to_string(e.max_abs) + " max, " +
+           fixed(100.0 * e.fraction_over, 2) + "% of the pixels over " + std::to_string(kWarpThresholdLsb) + " LSB";
+}
+
+// The plain frame with the lens disc hidden, median of `runs` (ms).
+frustum::Result<double> plain_frame_ms(ReportSession& s, const render::PassContext& ctx, const render::LensDraw& draw,
+                                       int runs) {
+    return s.median_ms(runs, [&]() -> frustum::Status {
+        s.frame->bind();
+        render::begin_frame(ctx);
+        render::SceneDraw scene{draw.camera};
+        scene.skip_instance = draw.skip_instance;
+        render::draw_scene(ctx, scene);
+        return {};
+    });
+}
+
+} // namespace
+
 std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, ReportSession& s, const Reporter& reporter) {
     const RenderRequest& r = request.render;
     WarpReport report;
@@ -31,29 +68,11 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
     if (auto status = write(reference, "lens-reference.png"); !status) {
         return runtime(status.error());
     }
-    // How far the reference itself is from converged: the same at twice the supersampling.
-    std::string self_check = "-";
-    if (2 * request.supersampling <= 8) {
-        if (auto drawn = reference::draw_lens_reference(ctx, *s.frame, draw, 2 * request.supersampling); !drawn) {
-            return runtime(drawn.error());
-        }
-        auto finer = s.read();
-        if (!finer) {
-            return runtime(finer.error());
-        }
-        const reference::MirrorError e = picture_error(reference, *finer, kWarpThresholdLsb);
-        self_check = fixed(e.mean_abs, 2) + " LSB mean, " + std::to_string(e.max_abs) + " max, " +
-                     fixed(100.0 * e.fraction_over, 2) + "% of the pixels over " + std::to_string(kWarpThresholdLsb) +
-                     " LSB";
+    auto self_check = reference_self_check(s, ctx, draw, reference, request.supersampling);
+    if (!self_check) {
+        return runtime(self_check.error());
     }
-    auto plain_ms = s.median_ms(request.runs, [&]() -> frustum::Status {
-        s.frame->bind();
-        render::begin_frame(ctx);
-        render::SceneDraw scene{s.cameras->main.pair};
-        scene.skip_instance = disc;
-        render::draw_scene(ctx, scene);
-        return {};
-    });
+    auto plain_ms = plain_frame_ms(s, ctx, draw, request.runs);
     if (!plain_ms) {
         return runtime(plain_ms.error());
     }
@@ -85,7 +104,7 @@ std::variant<WarpReport, Failure> lens_report(const WarpReportRequest& request, 
        << " mm on the near plane; camera '" << s.cameras->main.name << "', " << r.width_px << "x" << r.height_px
        << "; GL: " << s.context->describe().renderer << ".\n"
        << "Reference: " << levels << " nested level(s) at " << request.supersampling << "x, "
-       << fixed(reference_ms, 2) << " ms; against itself at " << 2 * request.supersampling << "x: " << self_check
+       << fixed(reference_ms, 2) << " ms; against itself at " << 2 * request.supersampling << "x: " << *self_check
        << ". Plain frame (lens disc hidden): " << fixed(*plain_ms, 2) << " ms.\n\n"
        << table.text();
     report.markdown = md.str();

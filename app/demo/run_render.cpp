@@ -71,151 +71,222 @@ std::variant<std::optional<render::PosterLayout>, Failure> choose_poster(const g
     return std::optional<render::PosterLayout>(*layout);
 }
 
-std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
-    if (request.stereo && request.width_px % 2 != 0) {
-        return Failure{ExitStatus::UsageError, "--stereo needs an even width (two eyes side by side), got --size " +
-                                                   std::to_string(request.width_px) + "x" +
-                                                   std::to_string(request.height_px)};
-    }
-    if (auto status = prepare_output_dir(request.out_dir); !status) {
-        return runtime(status.error());
-    }
-    g_activity = "loading the scene";
-    auto owned = std::make_unique<Session>(); // on the heap: GL objects point to its members
-    Session& session = *owned;
-    if (auto failure = session.open(request, reporter)) {
-        return *failure;
-    }
-    g_activity = "rendering";
-    const plan::Cameras* cameras = &*session.cameras;
-    scene::Scene* scene = &session.scene;
-    const gl::Functions* fn = session.fn.get();
-    render::Renderer* renderer = &*session.renderer;
-    auto samples = gl::choose_samples(*fn, request.msaa_samples);
+// What every effect of one `render` shares: the open session (on the heap:
+// GL objects point to its members), the frame's options, the stereo rig
+// and, for a poster, its layout.
+struct RenderSetup {
+    std::unique_ptr<Session> session;
+    render::RenderOptions options;
+    std::optional<plan::StereoRig> stereo;
+    std::optional<render::PosterLayout> layout;
+};
+
+// The options of every frame: the resolved effect values, the size, the
+// depth path and the MSAA samples the context grants.
+std::variant<render::RenderOptions, Failure> frame_options(const RenderRequest& request, const Session& session,
+                                                           const Reporter& reporter) {
+    const gl::Functions& fn = *session.fn;
+    auto samples = gl::choose_samples(fn, request.msaa_samples);
     if (!samples) {
         return runtime("--msaa " + std::to_string(request.msaa_samples) + ": " + samples.error());
     }
     if (request.verbose) {
         reporter.note("msaa: " + std::to_string(*samples) + " samples (GL_MAX_SAMPLES=" +
-                      std::to_string(gl::max_samples(*fn)) + ")");
-        reporter.note(depth_summary(*renderer, request.depth));
-        reporter.note("camera: " + cameras->main.name + ", overview: " + cameras->overview.name);
+                      std::to_string(gl::max_samples(fn)) + ")");
+        reporter.note(depth_summary(*session.renderer, request.depth));
+        reporter.note("camera: " + session.cameras->main.name + ", overview: " + session.cameras->overview.name);
     }
-
-    const std::optional<plan::StereoRig> stereo = plan::stereo_rig(request, cameras->main.pair, *scene);
-    if (stereo) { // the rig's bounds once, not once per effect
-        if (auto eyes = plan::stereo_eyes(cameras->main.pair, *stereo); !eyes) {
-            return runtime(eyes.error());
-        }
-    }
-    if (stereo && request.verbose) {
-        reporter.note("stereo: ipd " + plan::number_text(stereo->ipd_m) + " m, convergence " +
-                      plan::number_text(stereo->convergence_m) + " m");
-    }
-
     render::RenderOptions options;
     static_cast<plan::EffectParams&>(options) = session.effects.params;
     options.width_px = request.width_px;
     options.height_px = request.height_px;
     options.depth = request.depth;
     options.msaa_samples = *samples;
+    return options;
+}
 
-    const bool several = request.effects.size() > 1;
-    const std::size_t total = request.effects.size() + (several ? 1 : 0);
-    RenderRun run;
-    std::vector<std::pair<std::string, image::Image>> images;
-    const auto write = [&](const image::Image& picture, const std::string& name) -> frustum::Status {
-        const std::string path = request.out_dir + "/" + name;
-        if (auto status = image::write_png(picture, path); !status) {
-            return status;
+// The output folder, the session, the options, the stereo rig (its eyes
+// checked once, not once per effect) and the poster layout, or the first
+// failure.
+std::variant<RenderSetup, Failure> open_render(const RenderRequest& request, const Reporter& reporter) {
+    if (request.stereo && request.width_px % 2 != 0) {
+        return Failure{ExitStatus::UsageError, "--stereo needs an even width (two eyes side by side), got --size " +
+                                                   size_text(request.width_px, request.height_px)};
+    }
+    if (auto status = prepare_output_dir(request.out_dir); !status) {
+        return runtime(status.error());
+    }
+    g_activity = "loading the scene";
+    RenderSetup setup;
+    setup.session = std::make_unique<Session>();
+    const Session& session = *setup.session;
+    if (auto failure = setup.session->open(request, reporter)) {
+        return *failure;
+    }
+    g_activity = "rendering";
+    auto options = frame_options(request, session, reporter);
+    if (auto* failure = std::get_if<Failure>(&options)) {
+        return *failure;
+    }
+    setup.options = std::get<render::RenderOptions>(std::move(options));
+    const frustum::MatrixPair<float>& main = session.cameras->main.pair;
+    setup.stereo = plan::stereo_rig(request, main, session.scene);
+    if (setup.stereo) {
+        if (auto eyes = plan::stereo_eyes(main, *setup.stereo); !eyes) {
+            return runtime(eyes.error());
         }
+        if (request.verbose) {
+            reporter.note("stereo: ipd " + plan::number_text(setup.stereo->ipd_m) + " m, convergence " +
+                          plan::number_text(setup.stereo->convergence_m) + " m");
+        }
+    }
+    auto poster = choose_poster(*session.fn, request, setup.stereo.has_value());
+    if (auto* failure = std::get_if<Failure>(&poster)) {
+        return *failure;
+    }
+    setup.layout = std::get<0>(poster);
+    if (setup.layout && request.verbose) {
+        const render::PosterLayout& layout = *setup.layout;
+        reporter.note("poster: " + size_text(layout.width_px, layout.height_px) + " in tiles of " +
+                      size_text(layout.tile_width_px, layout.tile_height_px) + ", streamed to PNG" +
+                      (setup.stereo ? ", each eye " + size_text(layout.width_px / 2, layout.height_px)
+                                    : std::string()));
+    }
+    return setup;
+}
+
+// The files a run writes: each path kept, and "[k/n] name" on the progress
+// line when several effects (and their contact sheet) are written.
+struct RunFiles {
+    const RenderRequest& request;
+    const Reporter& reporter;
+    RenderRun& run;
+    bool several = false;
+    std::size_t total = 0;
+
+    void written(const std::string& path, const std::string& name) {
         run.written_paths.push_back(path);
         if (several) {
             reporter.progress("[" + std::to_string(run.written_paths.size()) + "/" + std::to_string(total) + "] " +
                               name);
         }
+    }
+    frustum::Status write(const image::Image& picture, const std::string& name) {
+        const std::string path = request.out_dir + "/" + name;
+        if (auto status = image::write_png(picture, path); !status) {
+            return status;
+        }
+        written(path, name);
         return {};
-    };
-    auto poster = choose_poster(*fn, request, stereo.has_value());
-    if (auto* failure = std::get_if<Failure>(&poster)) {
+    }
+};
+
+// One effect drawn and written: its picture (the direct render, or a
+// poster's thumbnail), or the effect's own error, or a failure that ends
+// the whole run (a file that cannot be written).
+struct EffectOutcome {
+    std::optional<image::Image> picture;
+    std::string error;
+    std::optional<Failure> abort;
+};
+
+EffectOutcome draw_effect(plan::Effect effect, const RenderSetup& setup, RunFiles& files) {
+    const RenderRequest& request = files.request;
+    const Session& session = *setup.session;
+    const std::string name(plan::to_string(effect));
+    if (request.verbose && effect == plan::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
+        const auto end = plan::recursion_end_note(session.cameras->main.pair, session.scene.world_bounds,
+                                                  plan::instance_boxes(session.scene), setup.options.recursion_links,
+                                                  setup.options.recursion_depth, request.width_px, request.height_px);
+        if (end && *end) {
+            files.reporter.note(**end);
+        }
+    }
+    EffectOutcome outcome;
+    if (setup.layout) {
+        PosterJob job{effect, *setup.layout, setup.stereo, request.out_dir + "/" + name + ".png",
+                      image::kStreamZlibLevel, files.reporter.status};
+        auto file = write_poster(*session.renderer, *session.cameras, setup.options, job);
+        if (!file) {
+            outcome.error = file.error();
+            return outcome;
+        }
+        if (request.verbose) {
+            files.reporter.note("poster: " + name + ".png: " + timing_text(file->timing, *setup.layout));
+        }
+        files.written(job.path, name + ".png");
+        outcome.picture = std::move(file->thumbnail);
+        return outcome;
+    }
+    auto drawn = setup.stereo
+                     ? render::render_stereo(*session.renderer, effect, *session.cameras, setup.options, *setup.stereo)
+                     : session.renderer->render(effect, *session.cameras, setup.options);
+    if (!drawn) {
+        outcome.error = drawn.error();
+    } else if (auto status = files.write(*drawn, name + ".png"); !status) {
+        outcome.abort = runtime(status.error());
+    } else {
+        outcome.picture = std::move(*drawn);
+    }
+    return outcome;
+}
+
+// The contact sheet of the effects drawn (none: no sheet).
+std::optional<Failure> write_contact_sheet(const std::vector<std::pair<std::string, image::Image>>& images,
+                                           RunFiles& files) {
+    std::vector<std::pair<std::string, const image::Image*>> cells;
+    for (const auto& [name, picture] : images) {
+        cells.emplace_back(name, &picture);
+    }
+    if (cells.empty()) {
+        return std::nullopt; // every effect failed: nothing to put on a sheet
+    }
+    auto sheet = image::contact_sheet(cells, 2);
+    if (!sheet) {
+        return runtime(sheet.error());
+    }
+    if (auto status = files.write(*sheet, "contact_sheet.png"); !status) {
+        return runtime(status.error());
+    }
+    return std::nullopt;
+}
+
+std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, const Reporter& reporter) {
+    auto opened = open_render(request, reporter);
+    if (auto* failure = std::get_if<Failure>(&opened)) {
         return *failure;
     }
-    const std::optional<render::PosterLayout> layout = std::get<0>(poster);
-    if (layout && request.verbose) {
-        reporter.note("poster: " + size_text(layout->width_px, layout->height_px) + " in tiles of " +
-                      size_text(layout->tile_width_px, layout->tile_height_px) + ", streamed to PNG" +
-                      (stereo ? ", each eye " + size_text(layout->width_px / 2, layout->height_px) : std::string()));
-    }
+    const RenderSetup& setup = std::get<RenderSetup>(opened);
+    const Session& session = *setup.session;
+    RenderRun run;
+    const bool several = request.effects.size() > 1;
+    RunFiles files{request, reporter, run, several, request.effects.size() + (several ? 1 : 0)};
+    std::vector<std::pair<std::string, image::Image>> images;
     for (plan::Effect effect : request.effects) {
+        EffectOutcome outcome = draw_effect(effect, setup, files);
+        if (outcome.abort) {
+            return *outcome.abort;
+        }
         const std::string name(plan::to_string(effect));
-        if (request.verbose && effect == plan::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
-            const auto end = plan::recursion_end_note(cameras->main.pair, scene->world_bounds,
-                                                      plan::instance_boxes(*scene), options.recursion_links,
-                                                      options.recursion_depth, request.width_px, request.height_px);
-            if (end && *end) {
-                reporter.note(**end);
-            }
-        }
-        std::optional<image::Image> picture; // a direct render; a poster leaves only its thumbnail
-        std::string error;
-        if (layout) {
-            PosterJob job{effect, *layout, stereo, request.out_dir + "/" + name + ".png", image::kStreamZlibLevel,
-                          reporter.status};
-            auto file = write_poster(*renderer, *cameras, options, job);
-            if (file) {
-                if (request.verbose) {
-                    reporter.note("poster: " + name + ".png: " + timing_text(file->timing, *layout));
-                }
-                run.written_paths.push_back(job.path);
-                if (several) {
-                    reporter.progress("[" + std::to_string(run.written_paths.size()) + "/" + std::to_string(total) +
-                                      "] " + name + ".png");
-                }
-                picture = std::move(file->thumbnail);
-            } else {
-                error = file.error();
-            }
-        } else {
-            auto drawn = stereo ? render::render_stereo(*renderer, effect, *cameras, options, *stereo)
-                                : renderer->render(effect, *cameras, options);
-            if (drawn) {
-                if (auto status = write(*drawn, name + ".png"); !status) {
-                    return runtime(status.error());
-                }
-                picture = std::move(*drawn);
-            } else {
-                error = drawn.error();
-            }
-        }
-        if (!picture) {
-            const std::string failure = name + ": " + error;
-            if (!several || (layout && error.rfind("image::PngStream", 0) == 0)) {
+        if (!outcome.picture) {
+            const std::string failure = name + ": " + outcome.error;
+            if (!several || (setup.layout && outcome.error.rfind("image::PngStream", 0) == 0)) {
                 return runtime(failure);
             }
             run.failed_effects.push_back(failure);
-            reporter.progress("[-/" + std::to_string(total) + "] " + name + " failed: " + error);
+            reporter.progress("[-/" + std::to_string(files.total) + "] " + name + " failed: " + outcome.error);
             continue;
         }
         if (several) {
-            images.emplace_back(name, with_caption(*picture, effect_caption(effect, options, cameras->main.name,
-                                                                            cameras->main.pair, *scene)));
+            images.emplace_back(name, with_caption(*outcome.picture,
+                                                   effect_caption(effect, setup.options, session.cameras->main.name,
+                                                                  session.cameras->main.pair, session.scene)));
         }
     }
     g_activity = "writing the contact sheet";
     if (several) {
-        std::vector<std::pair<std::string, const image::Image*>> cells;
-        for (const auto& [name, picture] : images) {
-            cells.emplace_back(name, &picture);
-        }
-        if (cells.empty()) {
-            return run; // every effect failed: nothing to put on a sheet
-        }
-        auto sheet = image::contact_sheet(cells, 2);
-        if (!sheet) {
-            return runtime(sheet.error());
-        }
-        if (auto status = write(*sheet, "contact_sheet.png"); !status) {
-            return runtime(status.error());
+        if (auto failure = write_contact_sheet(images, files)) {
+            return *failure;
         }
     }
     return run;
