@@ -226,29 +226,54 @@ bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
     return changed || moved;
 }
 
-PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view) {
-    follow(state);
-    PanelOutcome outcome;
+namespace {
+
+// The panel's window: the left kPanelWidthPx, full height, fixed; its
+// widgets' width (PushItemWidth) is popped in WindowPanel::draw().
+void begin_panel_window() {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidthPx, ImGui::GetIO().DisplaySize.y), ImGuiCond_Always);
     ImGui::Begin("frustum-demo window (P hides)", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-125.0f);
-    bool edited = false;
-    // The rows of the effect shown first, then those of no one effect
-    // (--effect, --msaa, fog, stereo), then the other effects' (folded).
-    const plan::Effect shown = state.effect;
-    const auto rows = [&](auto&& take) {
-        for (const Option& option : options()) {
-            const bool panel_row = (option.commands & kWindow) &&
-                                   (option.control.kind != PanelControl::Kind::None ||
-                                    (option.effect_row && !option.value));
-            if (panel_row && take(row_effect(option))) {
-                edited = row_widget(option, view) || edited;
-            }
-        }
-    };
-    // A refused value (from the last edit) and why an effect was not drawn, on top.
+}
+
+// The recursion effect's two facing mirrors (keys Z X, C V): push and turn of each.
+void facing_mirrors(window::ViewerState& state, const PanelView& view) {
+    if (!(state.effect == plan::Effect::Recursion && state.link_moves.size() >= 2 &&
+          ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen))) {
+        return;
+    }
+    const float reach_m = 0.5f * view.scene_radius_m;
+    const char* sides[] = {"left", "right"};
+    for (int i = 0; i < 2; ++i) {
+        plan::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
+        ImGui::PushID(i);
+        ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
+        ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);
+        ImGui::PopID();
+    }
+}
+
+// The mirror's turn, tilt, slide and push (when the scene has one), and M's reset.
+void mirror_placement(window::ViewerState& state, const PanelView& view) {
+    const float travel_m = kMirrorTravel * view.mirror_size_m;
+    if (!(view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen))) {
+        return;
+    }
+    ImGui::SliderAngle("turn", &state.mirror.turn_rad, -180.0f, 180.0f);
+    ImGui::SliderAngle("tilt", &state.mirror.tilt_rad, -85.0f, 85.0f);
+    ImGui::SliderFloat("slide m", &state.mirror.slide_m, -travel_m, travel_m, "%.3g");
+    ImGui::SliderFloat("push m", &state.mirror.push_m, -travel_m, travel_m, "%.3g");
+    if (ImGui::Button("mirror back (M)")) {
+        state.mirror = {};
+    }
+}
+
+} // namespace
+
+// A refused value (from the last edit) and why an effect was not drawn, on top.
+void WindowPanel::messages(const PanelView& view) const {
     if (error_) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("not applied: %s", error_->c_str());
@@ -259,6 +284,23 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
         ImGui::TextWrapped("%s", view.notice->c_str());
         ImGui::PopStyleColor();
     }
+}
+
+// The option rows: those of no one effect (--effect, --msaa, fog, stereo),
+// then those of the effect shown, then the other effects' (folded). True
+// when a row changed the command line.
+bool WindowPanel::option_rows(plan::Effect shown, const PanelView& view) {
+    bool edited = false;
+    const auto rows = [&](auto&& take) {
+        for (const Option& option : options()) {
+            const bool panel_row = (option.commands & kWindow) &&
+                                   (option.control.kind != PanelControl::Kind::None ||
+                                    (option.effect_row && !option.value));
+            if (panel_row && take(row_effect(option))) {
+                edited = row_widget(option, view) || edited;
+            }
+        }
+    };
     ImGui::TextDisabled("hover a name for its --help line");
     rows([](std::optional<plan::Effect> effect) { return !effect; });
     const std::string own = std::string(plan::to_string(shown)) + " effect";
@@ -268,53 +310,56 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     if (ImGui::CollapsingHeader("the other effects' options")) {
         rows([&](std::optional<plan::Effect> effect) { return effect && effect != shown; });
     }
-    edited = scene_file() || edited;
-    if (edited) {
-        auto parsed = line_.parse();
-        auto* settings = std::get_if<Settings>(&parsed);
-        const std::optional<std::string> refused = settings && view.check ? view.check(*settings) : std::nullopt;
-        if (settings && !refused) {
-            error_.reset();
-            current_ = *settings;
-            accepted_ = line_;
-            outcome.settings = *settings;
-        } else if (refused) {
-            error_ = *refused;
-            line_ = accepted_; // the window keeps what it shows
-        } else if (auto* failure = std::get_if<Failure>(&parsed)) {
-            error_ = failure->message;
-        }
+    return edited;
+}
+
+// After an edit: the command line parsed and checked. The settings when
+// the window takes them; otherwise empty, with the message shown next
+// frame (a refused line goes back to the last one taken).
+std::optional<Settings> WindowPanel::take_edit(const PanelView& view) {
+    auto parsed = line_.parse();
+    auto* settings = std::get_if<Settings>(&parsed);
+    const std::optional<std::string> refused = settings && view.check ? view.check(*settings) : std::nullopt;
+    if (settings && !refused) {
+        error_.reset();
+        current_ = *settings;
+        accepted_ = line_;
+        return *settings;
     }
-    if (state.effect == plan::Effect::Recursion && state.link_moves.size() >= 2 &&
-        ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const float reach_m = 0.5f * view.scene_radius_m;
-        const char* sides[] = {"left", "right"};
-        for (int i = 0; i < 2; ++i) {
-            plan::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
-            ImGui::PushID(i);
-            ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
-            ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);
-            ImGui::PopID();
-        }
+    if (refused) {
+        error_ = *refused;
+        line_ = accepted_; // the window keeps what it shows
+    } else if (auto* failure = std::get_if<Failure>(&parsed)) {
+        error_ = failure->message;
     }
-    numbers(view);
-    const float travel_m = kMirrorTravel * view.mirror_size_m;
-    if (view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::SliderAngle("turn", &state.mirror.turn_rad, -180.0f, 180.0f);
-        ImGui::SliderAngle("tilt", &state.mirror.tilt_rad, -85.0f, 85.0f);
-        ImGui::SliderFloat("slide m", &state.mirror.slide_m, -travel_m, travel_m, "%.3g");
-        ImGui::SliderFloat("push m", &state.mirror.push_m, -travel_m, travel_m, "%.3g");
-        if (ImGui::Button("mirror back (M)")) {
-            state.mirror = {};
-        }
-    }
-    // Above 1x, a poster of the current view (render::render_poster(), streamed to PNG).
+    return std::nullopt;
+}
+
+// The screenshot size and button. Above 1x, a poster of the current view
+// (render::render_poster(), streamed to PNG).
+void WindowPanel::screenshot(PanelOutcome& outcome) {
     const char* scales[] = {"1x", "2x", "4x", "8x"};
     ImGui::Combo("screenshot size", &screenshot_scale_index_, scales, 4);
     if (ImGui::Button("screenshot")) {
         outcome.screenshot = true;
         outcome.screenshot_scale = 1 << screenshot_scale_index_;
     }
+}
+
+PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view) {
+    follow(state);
+    PanelOutcome outcome;
+    begin_panel_window();
+    messages(view);
+    bool edited = option_rows(state.effect, view);
+    edited = scene_file() || edited;
+    if (edited) {
+        outcome.settings = take_edit(view);
+    }
+    facing_mirrors(state, view);
+    numbers(view);
+    mirror_placement(state, view);
+    screenshot(outcome);
     ImGui::TextWrapped("%s", line_.text().c_str());
     ImGui::PopItemWidth();
     ImGui::End();

@@ -65,6 +65,10 @@ public:
 
 private:
     void follow(const window::ViewerState& state);
+    void messages(const PanelView& view) const;
+    bool option_rows(plan::Effect shown, const PanelView& view);
+    std::optional<Settings> take_edit(const PanelView& view);
+    void screenshot(PanelOutcome& outcome);
     bool row_widget(const Option& option, const PanelView& view);
     bool scene_file();
     void numbers(const PanelView& view) const;
