@@ -211,37 +211,15 @@ frustum::Status Renderer::draw(plan::Effect effect, const PassContext& ctx, cons
     // Every effect is planned for the whole frame; what reaches the target
     // is the crop of that plan to the window (frame_window.hpp).
     const FrameWindow window = window_of(ctx, frame.width(), frame.height());
-    const int full_width_px = window.full_width_px, full_height_px = window.full_height_px;
     auto on_frame = crop_to_window(cameras.main.pair, window);
     if (!on_frame) {
         return on_frame.take_error_in("render::Renderer::render_into()");
     }
     switch (effect) {
-    case plan::Effect::Lens: {
-        auto lens = plan::fit_lens(cameras.main.pair, lens_, bounds_, options.fit, options.lens_power);
-        if (!lens) {
-            return lens.take_error();
-        }
-        // The disc is hidden: the lens effect is the magnifier itself, and the
-        // lens reference (reference/lens_reference.hpp) remaps a frame without it.
-        const int disc = lens_ ? lens_->instance : -1;
-        return draw_lens_frame(ctx, frame, LensDraw{cameras.main.pair, *lens, options.lens_grid, disc});
-    }
-    case plan::Effect::NonAffine: {
-        auto fitted = plan::fit_non_affine(cameras.main.pair, bounds_, options.nonaffine, options.fit);
-        if (!fitted) {
-            return fitted.take_error();
-        }
-        auto slits = plan::crossed_slits_frustum(cameras.main.pair, *fitted, ctx.depth.gpu_range());
-        if (!slits) {
-            return slits.take_error();
-        }
-        const plan::SplitGeometry& world = nonaffine_geometry_.get(gpu_scene_.instances(), fitted->max_edge_m);
-        if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
-            return stats.take_error();
-        }
-        return {};
-    }
+    case plan::Effect::Lens:
+        return draw_lens(ctx, frame, cameras.main.pair, options);
+    case plan::Effect::NonAffine:
+        return draw_non_affine(ctx, frame, cameras.main.pair, options);
     case plan::Effect::Curved:
         if (mirror_) {
             return draw_curved_mirror_frame(
@@ -262,45 +240,87 @@ frustum::Status Renderer::draw(plan::Effect effect, const PassContext& ctx, cons
         draw_scene(ctx, SceneDraw{*on_frame});
         return fog ? fog_pass_.apply(ctx, frame, *on_frame, fog->params) : frustum::Status{};
     case plan::Effect::Portal:
-    case plan::Effect::Recursion: {
-        auto group = link_group(effect, options, cameras.main.pair);
-        if (!group) {
-            return frustum::Error{group.error()};
-        }
-        const LinkGroup& g = **group;
-        const int depth = effect == plan::Effect::Portal ? 1 : options.recursion_depth;
-        auto nodes = plan::plan_view_tree(
-            cameras.main.pair, g.links,
-            plan::ViewTreeRequest{depth, full_width_px, full_height_px, plan::ViewBounds::Tight});
-        if (!nodes) {
-            return frustum::Error{nodes.error()};
-        }
-        return draw_recursion_frame(ctx, frame,
-                                    RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint, &recursion_targets_});
-    }
+    case plan::Effect::Recursion:
+        return draw_views(effect, ctx, frame, cameras.main.pair, options, window);
     case plan::Effect::Tiles:
         return draw_tiled_frame(ctx, frame, cameras.main.pair, options.tile_columns, options.tile_rows,
                                 options.tile_borders);
-    case plan::Effect::Frustum: {
-        std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
-        if (mirror_) {
-            auto reflection = plan::plan_reflection(*mirror_, cameras.main.pair, full_width_px, full_height_px,
-                                                    options.mirror_method, bounds_);
-            if (!reflection) {
-                return reflection.take_error();
-            }
-            if (*reflection) {
-                overlays.push_back({(*reflection)->pair, kReflectionFrustumColor});
-            }
-        }
-        auto viewer = crop_to_window(cameras.overview.pair, window);
-        if (!viewer) {
-            return viewer.take_error_in("render::Renderer::render_into()");
-        }
-        return draw_frustum_view(ctx, *viewer, overlays, line_style(bounds_));
-    }
+    case plan::Effect::Frustum:
+        return draw_frustums(ctx, cameras, options, window);
     }
     return {};
+}
+
+frustum::Status Renderer::draw_lens(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                    const frustum::MatrixPair<float>& camera, const RenderOptions& options) const {
+    auto lens = plan::fit_lens(camera, lens_, bounds_, options.fit, options.lens_power);
+    if (!lens) {
+        return lens.take_error();
+    }
+    // The disc is hidden: the lens effect is the magnifier itself, and the
+    // lens reference (reference/lens_reference.hpp) remaps a frame without it.
+    const int disc = lens_ ? lens_->instance : -1;
+    return draw_lens_frame(ctx, frame, LensDraw{camera, *lens, options.lens_grid, disc});
+}
+
+frustum::Status Renderer::draw_non_affine(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                          const frustum::MatrixPair<float>& camera,
+                                          const RenderOptions& options) const {
+    auto fitted = plan::fit_non_affine(camera, bounds_, options.nonaffine, options.fit);
+    if (!fitted) {
+        return fitted.take_error();
+    }
+    auto slits = plan::crossed_slits_frustum(camera, *fitted, ctx.depth.gpu_range());
+    if (!slits) {
+        return slits.take_error();
+    }
+    const plan::SplitGeometry& world = nonaffine_geometry_.get(gpu_scene_.instances(), fitted->max_edge_m);
+    if (auto stats = draw_non_affine_frame(ctx, frame, world, *slits, *fitted); !stats) {
+        return stats.take_error();
+    }
+    return {};
+}
+
+// Portal (one level) and recursion (options.recursion_depth levels): the
+// view tree of the link group for the whole frame.
+frustum::Status Renderer::draw_views(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                     const frustum::MatrixPair<float>& camera, const RenderOptions& options,
+                                     const FrameWindow& window) const {
+    auto group = link_group(effect, options, camera);
+    if (!group) {
+        return frustum::Error{group.error()};
+    }
+    const LinkGroup& g = **group;
+    const int depth = effect == plan::Effect::Portal ? 1 : options.recursion_depth;
+    auto nodes = plan::plan_view_tree(
+        camera, g.links,
+        plan::ViewTreeRequest{depth, window.full_width_px, window.full_height_px, plan::ViewBounds::Tight});
+    if (!nodes) {
+        return frustum::Error{nodes.error()};
+    }
+    return draw_recursion_frame(ctx, frame,
+                                RecursionDraw{*nodes, g.links, g.quads, options.mirror_tint, &recursion_targets_});
+}
+
+// The main camera's frustum and the mirror's, seen from the overview camera.
+frustum::Status Renderer::draw_frustums(const PassContext& ctx, const plan::Cameras& cameras,
+                                        const RenderOptions& options, const FrameWindow& window) const {
+    std::vector<FrustumOverlay> overlays{{cameras.main.pair, kMainFrustumColor}};
+    if (mirror_) {
+        auto reflection = plan::plan_reflection(*mirror_, cameras.main.pair, window.full_width_px,
+                                                window.full_height_px, options.mirror_method, bounds_);
+        if (!reflection) {
+            return reflection.take_error();
+        }
+        if (*reflection) {
+            overlays.push_back({(*reflection)->pair, kReflectionFrustumColor});
+        }
+    }
+    auto viewer = crop_to_window(cameras.overview.pair, window);
+    if (!viewer) {
+        return viewer.take_error_in("render::Renderer::render_into()");
+    }
+    return draw_frustum_view(ctx, *viewer, overlays, line_style(bounds_));
 }
 
 } // namespace render

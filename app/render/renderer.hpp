@@ -128,6 +128,17 @@ private:
 
     frustum::Status draw(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
                          const plan::Cameras& cameras, const RenderOptions& options) const;
+    // draw()'s effects that plan more than one pass: each plans for the whole
+    // frame (cameras.main.pair) and draws into `frame` its crop.
+    frustum::Status draw_lens(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                              const frustum::MatrixPair<float>& camera, const RenderOptions& options) const;
+    frustum::Status draw_non_affine(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                    const frustum::MatrixPair<float>& camera, const RenderOptions& options) const;
+    frustum::Status draw_views(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
+                               const frustum::MatrixPair<float>& camera, const RenderOptions& options,
+                               const FrameWindow& window) const;
+    frustum::Status draw_frustums(const PassContext& ctx, const plan::Cameras& cameras, const RenderOptions& options,
+                                  const FrameWindow& window) const;
 
     const gl::Context* context_;
     const gl::Functions* fn_;
