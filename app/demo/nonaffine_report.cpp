@@ -9,6 +9,53 @@
 
 namespace demo {
 
+namespace {
+
+// One configuration of the table: the naive eq. 36 first, then culling with
+// each subdivision edge.
+struct Row {
+    std::string label, stem;
+    plan::NonAffineOptions options;
+};
+
+std::vector<Row> report_rows(const plan::NonAffineOptions& defaults, const std::vector<float>& max_edges_m) {
+    std::vector<Row> rows;
+    plan::NonAffineOptions naive = defaults;
+    naive.cull = false;
+    naive.max_edge_m = 0.0f;
+    rows.push_back({"naive eq. 36 (no cull, no subdivision)", "nonaffine-naive", naive});
+    for (float edge : max_edges_m) {
+        plan::NonAffineOptions o = defaults;
+        o.max_edge_m = edge;
+        const std::string edge_text = edge > 0.0f ? fixed(edge, 2) : std::string("none");
+        rows.push_back({"cull, subdivision " + edge_text + (edge > 0.0f ? " m" : ""),
+                        "nonaffine-" + (edge > 0.0f ? fixed(edge, 2) + "m" : std::string("cull")), o});
+    }
+    return rows;
+}
+
+// Where the degenerate set cuts the scene: the original triangles culled
+// (a vertex within `guard_m` of it), per node.
+std::map<std::string, int> culled_by_node_name(const plan::WorldGeometry& geometry,
+                                               const frustum::NonAffineFrustum<float>& frustum, float guard_m,
+                                               const scene::Scene& scene) {
+    std::map<std::string, int> culled;
+    for (const plan::WorldPrimitive& p : geometry.primitives) {
+        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+            bool degenerate = false;
+            for (std::size_t v = 0; v < 3; ++v) {
+                degenerate = degenerate || render::is_degenerate(frustum, p.vertices[p.indices[t + v]].position, guard_m);
+            }
+            if (degenerate) {
+                ++culled[scene.instances[static_cast<std::size_t>(p.instance)].node_name];
+            }
+        }
+    }
+    return culled;
+}
+
+} // namespace
+
 std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& request, ReportSession& s,
                                                    const Reporter& reporter) {
     const RenderRequest& r = request.render;
@@ -38,27 +85,11 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
         return runtime(status.error());
     }
 
-    struct Row {
-        std::string label, stem;
-        plan::NonAffineOptions options;
-    };
-    std::vector<Row> rows;
-    plan::NonAffineOptions naive = defaults;
-    naive.cull = false;
-    naive.max_edge_m = 0.0f;
-    rows.push_back({"naive eq. 36 (no cull, no subdivision)", "nonaffine-naive", naive});
-    for (float edge : request.max_edges_m) {
-        plan::NonAffineOptions o = defaults;
-        o.max_edge_m = edge;
-        const std::string edge_text = edge > 0.0f ? fixed(edge, 2) : std::string("none");
-        rows.push_back({"cull, subdivision " + edge_text + (edge > 0.0f ? " m" : ""),
-                        "nonaffine-" + (edge > 0.0f ? fixed(edge, 2) + "m" : std::string("cull")), o});
-    }
+    const std::vector<Row> rows = report_rows(defaults, request.max_edges_m);
     MarkdownTable table({"configuration", "triangles", "culled", "mean error (LSB)", "max error (LSB)",
                          "pixels > " + std::to_string(kWarpThresholdLsb) + " LSB",
                          "frame (ms, median of " + std::to_string(request.runs) + ")"});
     image::Image last;
-    std::map<std::string, int> culled_by_node;
     for (const Row& row : rows) {
         reporter.progress(row.label);
         render::NonAffineStats stats;
@@ -84,19 +115,7 @@ std::variant<WarpReport, Failure> nonaffine_report(const WarpReportRequest& requ
     if (auto status = write(diff_picture(last, reference), "nonaffine-diff.png"); !status) {
         return runtime(status.error());
     }
-    // Where the degenerate set cuts the scene: the original triangles culled, per node.
-    for (const plan::WorldPrimitive& p : geometry.primitives) {
-        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-            bool degenerate = false;
-            for (std::size_t v = 0; v < 3; ++v) {
-                degenerate = degenerate || render::is_degenerate(*frustum, p.vertices[p.indices[t + v]].position,
-                                                                 defaults.guard_m);
-            }
-            if (degenerate) {
-                ++culled_by_node[s.scene.instances[static_cast<std::size_t>(p.instance)].node_name];
-            }
-        }
-    }
+    const std::map<std::string, int> culled_by_node = culled_by_node_name(geometry, *frustum, defaults.guard_m, s.scene);
     std::ostringstream md;
     md << "Non-affine frustum: crossed slits, slit " << fixed(defaults.slit_depth_m, 2) << " m and pivot "
        << fixed(defaults.pivot_depth_m, 2) << " m in front of the eye of camera '" << s.cameras->main.name
