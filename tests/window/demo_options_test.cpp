@@ -415,7 +415,8 @@ TEST_CASE("demo options: --effect accepts exactly the effects its help lists, ea
     std::vector<std::string> names;
     std::vector<Effect> all;
     for (const auto& [name, effect] : effects) {
-        CAPTURE(name);
+        const auto& value = name; // CAPTURE cannot take a structured binding (clang, C++17)
+        CAPTURE(value);
         names.push_back(name);
         all.push_back(effect);
         CHECK(settings_of(demo::kRender, {"--effect", name}).effects == std::vector<Effect>{effect});
@@ -451,7 +452,8 @@ TEST_CASE("demo options: --backend accepts exactly egl and osmesa, as its help l
         CAPTURE(command_text);
         CHECK(!demo::defaults(command).backend.has_value()); // unset: EGL, else OSMesa with a note
         for (const auto& [name, backend] : backends) {
-            CAPTURE(name);
+            const auto& value = name; // CAPTURE cannot take a structured binding (clang, C++17)
+            CAPTURE(value);
             const demo::Settings s = settings_of(command, {"--backend", name});
             REQUIRE(s.backend.has_value());
             CHECK(*s.backend == backend);
@@ -472,7 +474,8 @@ TEST_CASE("demo options: --keys parses every key its help names, any printable c
         {"Left", Key::Left}, {"Right", Key::Right}, {"Up", Key::Up}, {"Down", Key::Down}, {"Esc", Key::Escape}};
     std::vector<std::string> names;
     for (const auto& [name, key] : named) {
-        CAPTURE(name);
+        const auto& value = name; // CAPTURE cannot take a structured binding (clang, C++17)
+        CAPTURE(value);
         names.push_back(name);
         for (const bool shift : {false, true}) {
             const auto parsed = keys(shift ? "Shift+" + name : name);
