@@ -20,7 +20,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 
 namespace {
 
@@ -80,12 +82,17 @@ std::vector<Case<T>> make_ring(DepthRange depth) {
     return out;
 }
 
-// The cameras of `depth` (zero_to_one unless a benchmark names another).
+// The cameras of `depth` (zero_to_one unless a benchmark names another),
+// each ring made when a benchmark first asks for it.
 template <class T>
 const std::vector<Case<T>>& cases(DepthRange depth = DepthRange::ZeroToOne) {
-    static const std::vector<Case<T>> rings[] = {make_ring<T>(depth_ranges[0]), make_ring<T>(depth_ranges[1]),
-                                                 make_ring<T>(depth_ranges[2])};
-    return rings[depth == DepthRange::ZeroToOne ? 0 : depth == DepthRange::MinusOneToOne ? 1 : 2];
+    static std::vector<Case<T>> rings[std::size(depth_ranges)];
+    std::vector<Case<T>>& ring = rings[std::find(std::begin(depth_ranges), std::end(depth_ranges), depth) -
+                                       std::begin(depth_ranges)];
+    if (ring.empty()) {
+        ring = make_ring<T>(depth);
+    }
+    return ring;
 }
 
 template <class T, class F>
