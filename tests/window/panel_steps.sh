@@ -18,12 +18,25 @@ open_window() {
   rm -f "$state_file" "$state_file.log"
   FRUSTUM_WINDOW_STATE=$state_file "$demo" window "$@" &
   pid=$!
-  trap 'kill $pid 2>/dev/null || true' EXIT
+  trap on_exit EXIT
   wid=$(timeout "$wait_limit_s" xdotool search --sync --onlyvisible --name '^frustum' | head -1)
   wait_state 'frame=[0-9]'
 }
+# on_exit: a script that fails stops the window and says how it ended: 143
+# (SIGTERM) if it was still running, else its own status (a crash shows as
+# 128 + the signal), so that a window that went away is not taken for a
+# lost event.
+on_exit() {
+  local status=0
+  kill "$pid" 2>/dev/null || true
+  wait "$pid" || status=$?
+  echo "$script: frustum-demo window ended with status $status" >&2
+}
 finish() {
-  xdotool key --window "$wid" Escape
+  # The window may close on Esc's press before xdotool sends its release,
+  # which then fails with X's BadWindow: that the press was taken is what
+  # the wait below checks.
+  xdotool key --window "$wid" Escape 2>/dev/null || true
   timeout "$wait_limit_s" tail --pid="$pid" -f /dev/null || { echo "$script: the window did not close" >&2; return 1; }
   wait "$pid"
   trap - EXIT
