@@ -85,21 +85,25 @@ bool WindowPanel::scene_file() {
     }
     ImGui::PushID("scene file");
     ImGui::PushItemWidth(-60.0f);
+    widgets_.next_frame("scene path");
     bool load = ImGui::InputText("##path", scene_field_.data(), scene_field_.size(),
                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
     ImGui::PopItemWidth();
     tooltip("--scene: a glTF 2.0 file (.gltf or .glb); a click selects it all, Enter or load opens it");
     ImGui::SameLine();
     load = ImGui::Button("load") || load;
+    widgets_.item("load");
+    widgets_.next_frame("beside it");
     if (ImGui::BeginCombo("beside it", std::filesystem::path(current_.scene_path).filename().string().c_str())) {
         const std::vector<std::string> files = scene_files_beside(current_.scene_path); // read while open
         for (std::size_t i = 0; i < files.size(); ++i) {
             ImGui::PushID(static_cast<int>(i));
-            if (ImGui::Selectable(std::filesystem::path(files[i]).filename().string().c_str(),
-                                  files[i] == current_.scene_path)) {
+            const std::string name = std::filesystem::path(files[i]).filename().string();
+            if (ImGui::Selectable(name.c_str(), files[i] == current_.scene_path)) {
                 fill(scene_field_, files[i]);
                 load = true;
             }
+            widgets_.item("beside it=" + name);
             ImGui::PopID();
         }
         ImGui::EndCombo();
@@ -154,6 +158,7 @@ bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
     if (!option.value) {
         bool on = given.has_value();
         const bool changed = ImGui::Checkbox(label, &on);
+        widgets_.item(option.name);
         tooltip(option.help);
         if (changed) {
             on ? line_.set(option.name, "") : line_.remove(option.name);
@@ -165,12 +170,14 @@ bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
             control.kind == PanelControl::Kind::Choice ? split(control.choices, '|') : view.camera_names;
         const std::string shown = given ? *given : "(default)";
         bool changed = false;
+        widgets_.next_frame(option.name);
         if (ImGui::BeginCombo(label, shown.c_str())) {
             for (const std::string& choice : choices) {
                 if (ImGui::Selectable(choice.c_str(), given && *given == choice)) {
                     line_.set(option.name, choice);
                     changed = true;
                 }
+                widgets_.item(option.name + "=" + choice);
             }
             ImGui::EndCombo();
         }
@@ -181,6 +188,7 @@ bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
     ImGui::PushID(label);
     bool set = given.has_value();
     bool changed = ImGui::Checkbox("##set", &set);
+    widgets_.item(option.name + " set");
     if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("set %s (unticked: the default, derived from the scene)", label);
     }
@@ -204,6 +212,11 @@ bool WindowPanel::row_widget(const Option& option, const PanelView& view) {
         v[i] = std::strtof(parts[i].c_str(), nullptr);
     }
     const ImGuiSliderFlags flags = control.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
+    if (count == 1) {
+        widgets_.next_slider(option.name, control.whole, control.low, control.high);
+    } else {
+        widgets_.next_frame(option.name);
+    }
     bool moved = false;
     if (control.whole) {
         std::array<int, 4> n{};
@@ -239,7 +252,7 @@ void begin_panel_window() {
 }
 
 // The recursion effect's two facing mirrors (keys Z X, C V): push and turn of each.
-void facing_mirrors(window::ViewerState& state, const PanelView& view) {
+void facing_mirrors(window::ViewerState& state, const PanelView& view, PanelWidgets& widgets) {
     if (!(state.effect == plan::Effect::Recursion && state.link_moves.size() >= 2 &&
           ImGui::CollapsingHeader("facing mirrors (Z X, C V)", ImGuiTreeNodeFlags_DefaultOpen))) {
         return;
@@ -248,26 +261,34 @@ void facing_mirrors(window::ViewerState& state, const PanelView& view) {
     const char* sides[] = {"left", "right"};
     for (int i = 0; i < 2; ++i) {
         plan::LinkMove& move = state.link_moves[static_cast<std::size_t>(i)];
+        const std::string push = std::string(sides[i]) + " in m", turn = std::string(sides[i]) + " turn";
         ImGui::PushID(i);
-        ImGui::SliderFloat((std::string(sides[i]) + " in m").c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
-        ImGui::SliderAngle((std::string(sides[i]) + " turn").c_str(), &move.turn_rad, -60.0f, 60.0f);
+        widgets.next_slider(push, false, -reach_m, reach_m);
+        ImGui::SliderFloat(push.c_str(), &move.push_m, -reach_m, reach_m, "%.3g");
+        widgets.next_slider(turn, false, -60.0f, 60.0f);
+        ImGui::SliderAngle(turn.c_str(), &move.turn_rad, -60.0f, 60.0f);
         ImGui::PopID();
     }
 }
 
 // The mirror's turn, tilt, slide and push (when the scene has one), and M's reset.
-void mirror_placement(window::ViewerState& state, const PanelView& view) {
+void mirror_placement(window::ViewerState& state, const PanelView& view, PanelWidgets& widgets) {
     const float travel_m = kMirrorTravel * view.mirror_size_m;
     if (!(view.mirror_size_m > 0.0f && ImGui::CollapsingHeader("mirror placement", ImGuiTreeNodeFlags_DefaultOpen))) {
         return;
     }
+    widgets.next_slider("turn", false, -180.0f, 180.0f);
     ImGui::SliderAngle("turn", &state.mirror.turn_rad, -180.0f, 180.0f);
+    widgets.next_slider("tilt", false, -85.0f, 85.0f);
     ImGui::SliderAngle("tilt", &state.mirror.tilt_rad, -85.0f, 85.0f);
+    widgets.next_slider("slide m", false, -travel_m, travel_m);
     ImGui::SliderFloat("slide m", &state.mirror.slide_m, -travel_m, travel_m, "%.3g");
+    widgets.next_slider("push m", false, -travel_m, travel_m);
     ImGui::SliderFloat("push m", &state.mirror.push_m, -travel_m, travel_m, "%.3g");
     if (ImGui::Button("mirror back (M)")) {
         state.mirror = {};
     }
+    widgets.item("mirror back (M)");
 }
 
 } // namespace
@@ -339,8 +360,19 @@ std::optional<Settings> WindowPanel::take_edit(const PanelView& view) {
 // (render::render_poster(), streamed to PNG).
 void WindowPanel::screenshot(PanelOutcome& outcome) {
     const char* scales[] = {"1x", "2x", "4x", "8x"};
-    ImGui::Combo("screenshot size", &screenshot_scale_index_, scales, 4);
-    if (ImGui::Button("screenshot")) {
+    widgets_.next_frame("screenshot size");
+    if (ImGui::BeginCombo("screenshot size", scales[screenshot_scale_index_])) {
+        for (int i = 0; i < 4; ++i) {
+            if (ImGui::Selectable(scales[i], i == screenshot_scale_index_)) {
+                screenshot_scale_index_ = i;
+            }
+            widgets_.item(std::string("screenshot size=") + scales[i]);
+        }
+        ImGui::EndCombo();
+    }
+    const bool clicked = ImGui::Button("screenshot");
+    widgets_.item("screenshot");
+    if (clicked) {
         outcome.screenshot = true;
         outcome.screenshot_scale = 1 << screenshot_scale_index_;
     }
@@ -349,6 +381,7 @@ void WindowPanel::screenshot(PanelOutcome& outcome) {
 PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view) {
     follow(state);
     PanelOutcome outcome;
+    widgets_.clear();
     begin_panel_window();
     messages(view);
     bool edited = option_rows(state.effect, view);
@@ -356,9 +389,9 @@ PanelOutcome WindowPanel::draw(window::ViewerState& state, const PanelView& view
     if (edited) {
         outcome.settings = take_edit(view);
     }
-    facing_mirrors(state, view);
+    facing_mirrors(state, view, widgets_);
     numbers(view);
-    mirror_placement(state, view);
+    mirror_placement(state, view, widgets_);
     screenshot(outcome);
     ImGui::TextWrapped("%s", line_.text().c_str());
     ImGui::PopItemWidth();

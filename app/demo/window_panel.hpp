@@ -11,6 +11,7 @@
 #pragma once
 
 #include "demo/panel_command_line.hpp"
+#include "demo/panel_widgets.hpp"
 
 #include <window/controls.hpp>
 #include <window/fragment_counter.hpp>
@@ -62,6 +63,8 @@ public:
     PanelOutcome draw(window::ViewerState& state, const PanelView& view);
 
     const PanelCommandLine& command_line() const { return line_; }
+    // Where draw() put its widgets (empty until it has drawn).
+    const PanelWidgets& widgets() const { return widgets_; }
 
 private:
     void follow(const window::ViewerState& state);
@@ -81,6 +84,7 @@ private:
     int screenshot_scale_index_ = 0; // the screenshot size: 1 << index times the window's
     std::array<char, 1024> scene_field_{}; // the scene file's text field
     bool followed_ = false;
+    PanelWidgets widgets_;
 };
 
 } // namespace demo

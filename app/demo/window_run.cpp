@@ -327,7 +327,10 @@ private:
     // FRUSTUM_WINDOW_STATE=FILE (tests, docs/testing.md): after every frame
     // FILE holds "frame=N keys=K " + window::state_line() (K: --keys keys
     // pressed), replaced whole; FILE.log gets each line whose state differs
-    // from the last one logged. Scripts wait for a state there, not for time.
+    // from the last one logged; FILE.widgets where the panel drew each of
+    // its widgets in that frame (PanelWidgets::lines(), empty with the panel
+    // hidden). Scripts wait for a state there, not for time, and click
+    // widgets by name.
     const char* state_path_ = std::getenv("FRUSTUM_WINDOW_STATE");
     mutable std::string logged_state_;
 };
@@ -336,9 +339,15 @@ void WindowLoop::write_state() const {
     const std::string state = window::state_line(state_);
     const std::string line =
         "frame=" + std::to_string(run_.frames_drawn) + " keys=" + std::to_string(keys_pressed_) + " " + state + "\n";
-    const std::string path(state_path_), partial = path + ".partial";
-    std::ofstream(partial, std::ios::trunc) << line;
-    std::rename(partial.c_str(), path.c_str()); // a reader sees the old line or the new one, whole
+    const std::string path(state_path_);
+    // A reader sees the old text or the new one, whole.
+    const auto replace = [](const std::string& file, const std::string& text) {
+        const std::string partial = file + ".partial";
+        std::ofstream(partial, std::ios::trunc) << text;
+        std::rename(partial.c_str(), file.c_str());
+    };
+    replace(path, line);
+    replace(path + ".widgets", state_.show_panel ? panel_.widgets().lines() : std::string());
     if (state != logged_state_) {
         std::ofstream(path + ".log", std::ios::app) << line;
         logged_state_ = state;

@@ -7,8 +7,8 @@
 #   c.png  after clicking the --lens-power slider a quarter along (about 0.5)
 #   d.png  after clicking its left end (0: refused by the row, error in the panel)
 # each with the window's state line beside it (a.state .. d.state: the
-# effect and the lens power the window took), and quits with Esc. The widget positions are those of the panel's fixed
-# layout (ImGui's default font and style, the panel at the window's left).
+# effect and the lens power the window took), and quits with Esc. Widgets
+# are clicked by name where the window says it drew them (click_widget).
 # Usage: panel_clicks.sh FRUSTUM_DEMO OUT_DIR
 set -euo pipefail
 demo=$1
@@ -19,16 +19,16 @@ source "$(dirname "$0")/panel_steps.sh"
 open_window --size 480x360 --panel
 settle
 shot a.png
-click 100 76 # the --effect list (below --camera)
-click 40 185 # its sixth entry: lens
+click_widget --effect
+click_widget --effect=lens
 wait_state ' effect=lens '
 settle
 shot b.png
-click 75 351 # --lens-power, a quarter along
+click_widget --lens-power 0.25 # (0, 2]: 0.5
 wait_state ' lens-power=0[.]'
 settle
 shot c.png
-click 36 351 # its left end: 0
+click_widget --lens-power 0 # its left end: 0
 settle
 shot d.png
 finish

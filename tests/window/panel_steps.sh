@@ -86,6 +86,35 @@ shot() {
   import -window "$wid" "$out/$1"
   cp "$state_file" "$out/${1%.png}.state"
 }
+# widget_rect NAME: "x0 y0 x1 y1" of the panel's widget NAME as the last
+# frame drew it (FRUSTUM_WINDOW_STATE's FILE.widgets: demo::PanelWidgets,
+# whose names are the options, "LIST=ENTRY" and the labels); false while it
+# is not drawn whole (a list's entry while it is closed, a widget scrolled
+# out of the panel).
+widget_rect() {
+  awk -v name="$1" '{ n = $0; for (i = 0; i < 4; i++) sub(/^[^ ]+ /, "", n) }
+                    n == name { print $1, $2, $3, $4; found = 1 } END { exit !found }' "$state_file.widgets" 2>/dev/null
+}
+widget_names() { cut -d' ' -f5- "$state_file.widgets" 2>/dev/null | paste -sd, -; }
+# click_widget NAME [T]: a click T (0..1, default 0.5) along the widget
+# NAME, at half its height, once it is drawn (a slider's rectangle is the
+# span of its grab's centre: T = 0.25 is a quarter of its range).
+click_widget() {
+  local rect x y
+  rect=$(poll widget_rect "$1") || { echo "$script: the panel never drew '$1' whole (it drew: $(widget_names))" >&2; return 1; }
+  read -r x y < <(echo "$rect" | awk -v t="${2:-0.5}" '{ printf "%d %d\n", $1 + t * ($3 - $1) + 0.5, ($2 + $4) / 2 }')
+  click "$x" "$y"
+}
+# show_widget NAME: the mouse wheel over the panel until NAME is drawn whole.
+show_widget() {
+  local steps=0
+  until widget_rect "$1" >/dev/null; do
+    if [ "$steps" -ge 60 ]; then echo "$script: '$1' not drawn after $steps wheel steps (drawn: $(widget_names))" >&2; return 1; fi
+    xdotool mousemove --window "$wid" 160 200 click 5
+    wait_frames 2
+    steps=$((steps + 1))
+  done
+}
 # A click as three steps with frames drawn between them, so that press and
 # release land in different frames (ImGui 1.86 keeps only the button's
 # state per frame: a press and release within one frame are lost, and a

@@ -134,9 +134,10 @@ TEST_CASE("clicks on the panel change the effect and the lens power; a refused v
     CHECK(state_field(child->a_state, "effect") == "plain");
     CHECK(state_field(child->b_state, "effect") == "lens");
     CHECK(state_field(child->b_state, "lens-power") == "2");
-    // The --lens-power slider, (0, 2] across its width, clicked a quarter
-    // along: the window took 0.5 to within 0.02 (measured 0.493: the click's
-    // pixel is not the exact quarter; 0.02 is about three times that), and
+    // The --lens-power slider, (0, 2] along its grab's span, clicked a
+    // quarter along: the window took 0.5 to within 0.02 (measured 0.507: the
+    // click lands on a whole pixel, 0.012 of power at this width; 0.02 is
+    // under two pixels), and
     // drew another magnification.
     const std::string power = state_field(child->c_state, "lens-power");
     REQUIRE(!power.empty());
@@ -156,13 +157,12 @@ TEST_CASE("the scene file control loads another scene, and a missing file leaves
     const std::string box = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-models/box.gltf";
     // The other scene: the textured square of the feature files (tests/data/gltf-features, the folder next to box's).
     const std::string other = std::string(FRUSTUM_SOURCE_DIR) + "/tests/data/gltf-features/orientation.gltf";
-    // Its place in the "beside it" list, as the panel derives it (the script clicks rows 0..7).
+    // In the "beside it" list, as the panel derives it, among the eight rows the open list shows.
     const std::vector<std::string> beside = demo::scene_files_beside(box);
     const auto at = std::find(beside.begin(), beside.end(), other);
     REQUIRE(at != beside.end());
-    const long index = at - beside.begin();
-    REQUIRE(index < 8);
-    const auto child = run_panel_script("scene_clicks.sh", dir, {box, std::to_string(index), "/nonexistent/missing.gltf"});
+    REQUIRE(at - beside.begin() < 8);
+    const auto child = run_panel_script("scene_clicks.sh", dir, {box, "orientation.gltf", "/nonexistent/missing.gltf"});
     if (!child) {
         return;
     }
