@@ -13,7 +13,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double cpu_seconds(std::clock_t ticks) { return static_cast<double>(ticks) / CLOCKS_PER_SEC; }
+// A moment on both clocks of Spent.
+struct Mark {
+    Clock::time_point wall = Clock::now();
+    std::clock_t cpu = std::clock();
+};
+
+void add_between(Spent& spent, const Mark& from, const Mark& to) {
+    spent.wall_s += std::chrono::duration<double>(to.wall - from.wall).count();
+    spent.cpu_s += static_cast<double>(to.cpu - from.cpu) / CLOCKS_PER_SEC;
+}
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -40,25 +49,20 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
     image::Thumbnail thumbnail(layout.width_px, layout.height_px, kPosterThumbnailSidePx);
     PosterTiming timing;
     const Clock::time_point start = Clock::now();
-    Clock::time_point last_sink_end = start;
     Clock::time_point last_status = start;
     const double tile_mpx = double(layout.tile_width_px) * layout.tile_height_px / 1e6;
     const double frame_mpx = double(layout.width_px) * layout.height_px / 1e6;
 
-    std::clock_t last_sink_end_cpu = std::clock();
+    Mark last_sink_end;
     const render::PosterRowSink sink = [&](const image::Image& rows, int) -> frustum::Status {
-        const Clock::time_point begin = Clock::now();
-        const std::clock_t begin_cpu = std::clock();
-        timing.render_and_read_back_s += std::chrono::duration<double>(begin - last_sink_end).count();
-        timing.render_and_read_back_cpu_s += cpu_seconds(begin_cpu - last_sink_end_cpu);
+        const Mark begin;
+        add_between(timing.render_and_read_back, last_sink_end, begin);
         if (auto written = (*stream)->write_rows(rows); !written) {
             return written;
         }
         thumbnail.add_rows(rows);
-        last_sink_end = Clock::now();
-        last_sink_end_cpu = std::clock();
-        timing.compression_s += std::chrono::duration<double>(last_sink_end - begin).count();
-        timing.compression_cpu_s += cpu_seconds(last_sink_end_cpu - begin_cpu);
+        last_sink_end = Mark{};
+        add_between(timing.compression, begin, last_sink_end);
         return {};
     };
     const render::PosterProgress progress = [&](int done, int total) {

@@ -24,17 +24,19 @@ inline constexpr int kMaxDirectSidePx = 8192;
 // The contact sheet's cell of a poster: its longer side at most this.
 inline constexpr int kPosterThumbnailSidePx = 1024;
 
-// Where the time of a poster went, in seconds: drawing and reading back the
-// tiles (render_poster() between its sink calls), and the rows' PNG
-// compression with the thumbnail (the sink); wall clock, and the process's
-// CPU time (std::clock(): every thread's, llvmpipe's included), which a
-// loaded machine does not stretch as it stretches the wall clock.
+// Time spent, as the wall clock and as the process's CPU time
+// (std::clock(): every thread's, llvmpipe's included), which a loaded
+// machine does not stretch as it stretches the wall clock.
+struct Spent {
+    double wall_s = 0.0;
+    double cpu_s = 0.0;
+};
+
+// Where the time of a poster went.
 struct PosterTiming {
-    double render_and_read_back_s = 0.0;
-    double compression_s = 0.0;
-    double total_s = 0.0;
-    double render_and_read_back_cpu_s = 0.0;
-    double compression_cpu_s = 0.0;
+    Spent render_and_read_back; // drawing and reading back the tiles: render_poster() between its sink calls
+    Spent compression;          // the rows' PNG compression and the thumbnail (the sink)
+    double total_s = 0.0;       // wall clock, start to finish
 };
 
 struct PosterFile {

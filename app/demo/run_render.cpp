@@ -44,8 +44,8 @@ std::string timing_text(const PosterTiming& timing, const render::PosterLayout& 
     std::snprintf(text, sizeof text,
                   "%.2f s, %.2f Mpx/s (render and read-back %.2f s, PNG %.2f s; CPU: render and read-back %.2f s, "
                   "PNG %.2f s)",
-                  timing.total_s, timing.total_s > 0.0 ? mpx / timing.total_s : 0.0, timing.render_and_read_back_s,
-                  timing.compression_s, timing.render_and_read_back_cpu_s, timing.compression_cpu_s);
+                  timing.total_s, timing.total_s > 0.0 ? mpx / timing.total_s : 0.0, timing.render_and_read_back.wall_s,
+                  timing.compression.wall_s, timing.render_and_read_back.cpu_s, timing.compression.cpu_s);
     return text;
 }
 

@@ -17,9 +17,8 @@ namespace frustum {
 
 namespace {
 
-// The normalized reference form (reflect, then the clip core with the unit
-// plane). Only reached when a check of the fast form below fails: it gives
-// the refusal and its text, or the result at a check's rounding boundary.
+// mirror()'s reference form (FRUSTUM_COLD, detail/pair_updates.hpp):
+// reflect, then the clip core with the unit plane.
 template <class T>
 FRUSTUM_COLD Result<MatrixPair<T>> mirror_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "mirror");

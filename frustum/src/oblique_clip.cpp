@@ -84,10 +84,9 @@ template Result<MatrixPair<double>> clip_oblique_in_clip_space(const MatrixPair<
 
 namespace {
 
-// The normalized reference form: the unit plane, then the core above. Only
-// reached when a check of the fast form fails (detail::clip_columns): it
-// gives the refusal and its text, or the result at a check's rounding
-// boundary.
+// clip_oblique()'s reference form (FRUSTUM_COLD, detail/pair_updates.hpp;
+// reached from detail::clip_columns' checks): the unit plane, then the
+// core above.
 template <class T>
 FRUSTUM_COLD Result<MatrixPair<T>> clip_oblique_reference(const MatrixPair<T>& pair, const Plane<T>& plane) {
     const auto unit = checked_unit_plane(plane, "clip_oblique");

@@ -19,6 +19,10 @@
 #include <limits>
 #include <type_traits>
 
+// FRUSTUM_COLD marks a fast form's reference form too (mirror_reference,
+// clip_oblique_reference): the normalized computation, only reached when
+// a check of the fast form fails, which gives the refusal and its text, or
+// the result at a check's rounding boundary.
 #if defined(__GNUC__)
 #define FRUSTUM_HOT_INLINE inline __attribute__((always_inline))
 #define FRUSTUM_COLD __attribute__((cold, noinline))
