@@ -142,9 +142,9 @@ TEST_CASE("the recursion ends cleanly at the first level whose link leaves nothi
 }
 
 TEST_CASE("seen from inside the room and the street, the derived mirror stands in front of the eye, in view, facing it") {
-    for (const char* file : {"room.gltf", "room_no_zfar.gltf", "street.gltf"}) {
+    for (const std::string file : {"room.gltf", "room_no_zfar.gltf", "street.gltf"}) {
         CAPTURE(file);
-        scene::Scene s = load(file);
+        scene::Scene s = load(file.c_str());
         const plan::Cameras cameras = cameras_of(s);
         const std::vector<scene::Bounds> boxes = plan::instance_boxes(s);
         // The old rule's floor, under the model's bounds, is below the floor the camera stands on.
@@ -184,7 +184,7 @@ TEST_CASE("seen from inside the room and the street, the derived mirror stands i
 }
 
 TEST_CASE("seen from outside, a floor the camera sees stays the derived mirror") {
-    for (const char* file : {"box.gltf", "torus.gltf"}) {
+    for (const std::string file : {"box.gltf", "torus.gltf"}) {
         CAPTURE(file);
         auto loaded = scene::load_gltf(test_samples::model_path(file));
         REQUIRE(loaded.ok());

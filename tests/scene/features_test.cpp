@@ -191,7 +191,7 @@ TEST_CASE("the generated files are what scripts/make_feature_gltf.py writes, and
     REQUIRE_MESSAGE(made.exit_status == 0, made.err);
     const std::filesystem::path repository(FRUSTUM_SOURCE_DIR);
     std::size_t compared = 0;
-    for (const char* folder : {"tests/data/gltf-features", "tests/data/gltf-models", "tests/fuzz/corpus/gltf"}) {
+    for (const std::string folder : {"tests/data/gltf-features", "tests/data/gltf-models", "tests/fuzz/corpus/gltf"}) {
         CAPTURE(folder);
         for (const auto& entry : std::filesystem::directory_iterator(dir.path() / folder)) {
             const std::string name = entry.path().filename().string();

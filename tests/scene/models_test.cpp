@@ -224,7 +224,7 @@ TEST_CASE("skin: the bind pose at the node, joints and weights not needed to dra
 }
 
 TEST_CASE("textures: the orientation PNG decodes with red at uv (0, 0), the image's top left") {
-    for (const char* file : {"box_textured.gltf", "interleaved.gltf", "torus.gltf", "torus.glb"}) {
+    for (const std::string file : {"box_textured.gltf", "interleaved.gltf", "torus.gltf", "torus.glb"}) {
         CAPTURE(file);
         const scene::Scene s = load_ok(model_path(file));
         scene_test::check_one_image(s, 4, 4);

@@ -34,7 +34,7 @@ TEST_CASE("showcase: contents, mirror, lens and cameras") {
     for (std::size_t i = 0; i < s.instances.size(); ++i) {
         instance_by_name[s.instances[i].node_name] = static_cast<int>(i);
     }
-    for (const char* name : {"floor", "mirror", "mirror_backing", "marker_behind_mirror", "box_blue",
+    for (const std::string name : {"floor", "mirror", "mirror_backing", "marker_behind_mirror", "box_blue",
                              "box_green", "pyramid_yellow", "cylinder_purple", "sphere_orange", "lens"}) {
         CAPTURE(name);
         CHECK(instance_by_name.count(name) == 1);
@@ -67,7 +67,7 @@ TEST_CASE("showcase: contents, mirror, lens and cameras") {
         return glm::dot(glm::vec3(s.instances[instance_by_name[name]].world[3]) - centre, normal);
     };
     CHECK(side("marker_behind_mirror") < -0.5f);
-    for (const char* name : {"box_blue", "box_green", "pyramid_yellow", "cylinder_purple", "sphere_orange"}) {
+    for (const std::string name : {"box_blue", "box_green", "pyramid_yellow", "cylinder_purple", "sphere_orange"}) {
         CAPTURE(name);
         CHECK(side(name) > 0.5f);
     }
@@ -85,7 +85,7 @@ TEST_CASE("showcase: contents, mirror, lens and cameras") {
         return t > 0.0f && std::abs(uv.x) < 0.5f && std::abs(uv.y) < 0.5f;
     };
     // The coloured objects show up in the reflection...
-    for (const char* name : {"box_blue", "box_green", "pyramid_yellow", "cylinder_purple", "sphere_orange"}) {
+    for (const std::string name : {"box_blue", "box_green", "pyramid_yellow", "cylinder_purple", "sphere_orange"}) {
         CAPTURE(name);
         const glm::vec3 p(s.instances[instance_by_name[name]].world[3]);
         CHECK(on_mirror(p - 2.0f * glm::dot(p - centre, normal) * normal));

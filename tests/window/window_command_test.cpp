@@ -59,7 +59,7 @@ TEST_CASE("the window's screenshot matches the offscreen renderer for every effe
 // panel_test.cpp; the mirror effect (clip control, the reflection pass) and
 // the recursion effect (its levels marked as passes).
 TEST_CASE("--context gl: the window with the panel hidden equals render") {
-    for (const char* effect : {"mirror", "recursion"}) {
+    for (const std::string effect : {"mirror", "recursion"}) {
         CAPTURE(effect);
         TempDir dir;
         const std::string shot = (dir / "window.png").string();
