@@ -18,16 +18,25 @@ void PanelWidgets::add(const std::string& name, float x0_px, float y0_px, float 
 }
 
 void PanelWidgets::item(const std::string& name) {
+    if (!on_) {
+        return;
+    }
     const ImVec2 top = ImGui::GetItemRectMin(), bottom = ImGui::GetItemRectMax();
     add(name, top.x, top.y, bottom.x, bottom.y);
 }
 
 void PanelWidgets::next_frame(const std::string& name) {
+    if (!on_) {
+        return;
+    }
     const ImVec2 top = ImGui::GetCursorScreenPos();
     add(name, top.x, top.y, top.x + ImGui::CalcItemWidth(), top.y + ImGui::GetFrameHeight());
 }
 
 void PanelWidgets::next_slider(const std::string& name, bool whole, float low, float high) {
+    if (!on_) {
+        return;
+    }
     constexpr float kGrabPaddingPx = 2.0f; // imgui_widgets.cpp, SliderBehaviorT
     const ImVec2 top = ImGui::GetCursorScreenPos();
     const float slider_px = ImGui::CalcItemWidth() - 2.0f * kGrabPaddingPx;

@@ -26,6 +26,8 @@ struct PanelWidget {
 
 class PanelWidgets {
 public:
+    // Off (the default), nothing is recorded: the calls below return at once.
+    void record(bool on) { on_ = on; }
     void clear() { widgets_.clear(); }
     // The last ImGui item, whole (a button, a checkbox, a list entry).
     void item(const std::string& name);
@@ -47,6 +49,7 @@ public:
 private:
     void add(const std::string& name, float x0_px, float y0_px, float x1_px, float y1_px);
     std::vector<PanelWidget> widgets_;
+    bool on_ = false;
 };
 
 } // namespace demo

@@ -63,8 +63,10 @@ public:
     PanelOutcome draw(window::ViewerState& state, const PanelView& view);
 
     const PanelCommandLine& command_line() const { return line_; }
-    // Where draw() put its widgets (empty until it has drawn).
+    // Where draw() put its widgets (empty until it has drawn, and unless
+    // recorded: off by default).
     const PanelWidgets& widgets() const { return widgets_; }
+    void record_widgets(bool on) { widgets_.record(on); }
 
 private:
     void follow(const window::ViewerState& state);

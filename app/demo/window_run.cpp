@@ -283,6 +283,7 @@ public:
           titled_effect_(state_.effect), size_(session.window->framebuffer_size()), shown_effect_(state_.effect),
           last_frame_(std::chrono::steady_clock::now()) {
         derive_from_scene();
+        panel_.record_widgets(state_path_ != nullptr); // only FRUSTUM_WINDOW_STATE reads them
     }
 
     // One pass of the loop; `done` when the window is to close (Esc, or --frames reached).

@@ -15,7 +15,7 @@
 wait_limit_s=${wait_limit_s:-120}
 state_file=$out/state
 open_window() {
-  rm -f "$state_file" "$state_file.log"
+  rm -f "$state_file" "$state_file.log" "$state_file.widgets"
   FRUSTUM_WINDOW_STATE=$state_file "$demo" window "$@" &
   pid=$!
   trap on_exit EXIT
