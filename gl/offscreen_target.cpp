@@ -201,36 +201,72 @@ void OffscreenTarget::resolve() const {
     if (samples_ <= 1) {
         return;
     }
+    blit_color(resolve_framebuffer_, width_, height_);
+}
+
+frustum::Status OffscreenTarget::blit_color_to(const OffscreenTarget& to, int width_px, int height_px) const {
+    constexpr const char* kBlit = "gl::OffscreenTarget::blit_color_to()";
+    if (to.samples_ != 1) {
+        return frustum::Error{std::string(kBlit) + ": the target blitted into must have 1 sample, got " +
+                              std::to_string(to.samples_)};
+    }
+    if (width_px < 1 || height_px < 1 || width_px > std::min(width_, to.width_) ||
+        height_px > std::min(height_, to.height_)) {
+        return frustum::Error{std::string(kBlit) + ": " + size_text(width_px, height_px) + " pixels must fit both the " +
+                              size_text(width_, height_) + " target and the " + size_text(to.width_, to.height_) +
+                              " one"};
+    }
+    blit_color(to.framebuffer_, width_px, height_px);
+    return check_error(*fn_, "gl::OffscreenTarget::blit_color_to()");
+}
+
+void OffscreenTarget::blit_color(const Framebuffer& to, int width_px, int height_px) const {
     fn_->BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
     fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    fn_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_framebuffer_.id());
+    fn_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to.id());
     fn_->Disable(GL_SCISSOR_TEST); // the blit is scissored too
-    fn_->BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    fn_->BlitFramebuffer(0, 0, width_px, height_px, 0, 0, width_px, height_px, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     bind();
 }
 
 frustum::Result<image::Image> OffscreenTarget::read_rgba8() const {
+    image::Image result = image::make_image(width_, height_, {0, 0, 0, 0});
+    if (auto read = read_rgba8_into(result, 0); !read) {
+        return read.take_error();
+    }
+    return result;
+}
+
+frustum::Status OffscreenTarget::read_rgba8_into(image::Image& rows, int x_px) const {
+    if (rows.height != height_ || x_px < 0 || x_px > rows.width - width_ ||
+        rows.rgba.size() != static_cast<std::size_t>(rows.width) * static_cast<std::size_t>(rows.height) * 4) {
+        return frustum::Error{"gl::OffscreenTarget::read_rgba8_into(): a " + size_text(width_, height_) +
+                              " target at column " + std::to_string(x_px) + " does not fit a " +
+                              size_text(rows.width, rows.height) + " image"};
+    }
     resolve();
     fn_->BindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer().id());
     fn_->Viewport(0, 0, width_, height_);
     fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
     fn_->BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     fn_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    fn_->PixelStorei(GL_PACK_ROW_LENGTH, rows.width);
+    fn_->PixelStorei(GL_PACK_SKIP_PIXELS, x_px);
+    fn_->PixelStorei(GL_PACK_SKIP_ROWS, 0);
+    fn_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.rgba.data());
     fn_->PixelStorei(GL_PACK_ROW_LENGTH, 0);
     fn_->PixelStorei(GL_PACK_SKIP_PIXELS, 0);
-    fn_->PixelStorei(GL_PACK_SKIP_ROWS, 0);
-    image::Image result = image::make_image(width_, height_, {0, 0, 0, 0});
-    fn_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, result.rgba.data());
-    if (auto error = check_error(*fn_, "gl::OffscreenTarget::read_rgba8(): glReadPixels"); !error) {
+    if (auto error = check_error(*fn_, "gl::OffscreenTarget::read_rgba8_into(): glReadPixels"); !error) {
         return frustum::Error{error.error()};
     }
-    const auto row_bytes = static_cast<std::ptrdiff_t>(width_) * 4;
+    // GL's rows start at the bottom: flip this target's columns of `rows`.
+    const auto row_bytes = static_cast<std::ptrdiff_t>(rows.width) * 4;
+    const auto span_bytes = static_cast<std::ptrdiff_t>(width_) * 4;
+    auto column = rows.rgba.begin() + static_cast<std::ptrdiff_t>(x_px) * 4;
     for (int top = 0, bottom = height_ - 1; top < bottom; ++top, --bottom) {
-        std::swap_ranges(result.rgba.begin() + top * row_bytes,
-                         result.rgba.begin() + (top + 1) * row_bytes,
-                         result.rgba.begin() + bottom * row_bytes);
+        std::swap_ranges(column + top * row_bytes, column + top * row_bytes + span_bytes, column + bottom * row_bytes);
     }
-    return result;
+    return {};
 }
 
 } // namespace gl

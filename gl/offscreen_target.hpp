@@ -54,6 +54,15 @@ public:
     // Leaves the scissor test off. samples == 1: nothing to do.
     void resolve() const;
 
+    // Blits the bottom-left width_px x height_px of what was drawn here
+    // (multisampled: resolved on the way) into the bottom-left of `to`, a
+    // single-sample target, and binds this one again: one multisampled
+    // target drawn a part at a time can fill several smaller textures.
+    // Leaves the scissor test off. Errors: a `to` with samples, a size
+    // larger than either target, e.g.
+    // "gl::OffscreenTarget::blit_color_to(): 600x20 pixels must fit both the 512x256 target and the 600x20 one".
+    frustum::Status blit_color_to(const OffscreenTarget& to, int width_px, int height_px) const;
+
     // After drawing: resolves, then frees what only drawing needs (the
     // multisampled colour, the depth buffer and the drawing framebuffer),
     // keeping the resolved colour: color_texture(), resolved_framebuffer()
@@ -77,9 +86,16 @@ public:
     // The colour attachment (resolved first), rows top to bottom (GL's start
     // at the bottom). Binds this target and resets the pixel-pack state it relies on.
     frustum::Result<image::Image> read_rgba8() const;
+    // The same into columns x_px .. x_px + width() - 1 of `rows`, an image
+    // exactly height() high (a poster's row of tiles), without an image of
+    // its own: the other columns are left as they are. Errors: a target that
+    // does not fit there, e.g.
+    // "gl::OffscreenTarget::read_rgba8_into(): a 512x256 target at column 3900 does not fit a 4096x256 image".
+    frustum::Status read_rgba8_into(image::Image& rows, int x_px) const;
 
 private:
     OffscreenTarget() = default;
+    void blit_color(const Framebuffer& to, int width_px, int height_px) const;
 
     const Functions* fn_ = nullptr;
     int width_ = 0;

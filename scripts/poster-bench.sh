@@ -13,13 +13,14 @@
 # resident set size" is the peak RSS (getrusage's ru_maxrss of the child),
 # its user + system time the CPU seconds of the whole process (loading the
 # scene and the GL context included; llvmpipe's threads count). The split
-# into rendering with read-back and PNG compression, in wall and in CPU
+# into rendering, read-back (each tile after a glFinish) and PNG compression, in wall and in CPU
 # seconds, is the one --verbose prints (demo/poster_file.hpp). The machine
 # may be loaded: the wall clock then measures the load as much as the
 # poster, the CPU seconds much less; "load" is the 1-minute load average
-# (/proc/loadavg) as each run starts. 4096 fits one target, so it is forced
-# through the poster path with --poster-tile 4096x1024, the tile the
-# automatic layout picks at that width. The PNGs are deleted after each run.
+# (/proc/loadavg) as each run starts. 4096 and 8192 fit one target, so they
+# are forced through the poster path with --poster-tile auto (the tiles the
+# automatic layout picks, render::poster_layout()). The PNGs are deleted
+# after each run.
 set -euo pipefail
 scene=showcase
 if [ "${1:-}" = "--scene" ]; then
@@ -58,14 +59,14 @@ case "$scene" in
 esac
 echo "uptime: $(uptime)"
 echo
-echo "| size | effect | tiles | load | wall s | Mpx/s | wall s/Mpx: render + read-back | PNG | CPU s/Mpx: render + read-back | PNG | process CPU s/Mpx (user+sys) | peak RSS MB | PNG MB |"
+echo "| size | effect | tiles | load | wall s | Mpx/s | CPU s/Mpx: render | read-back | PNG | all three | process CPU s/Mpx (user+sys) | peak RSS MB | PNG MB |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for size in $sizes; do
   for token in $effects; do
     effect=${token%+stereo}
     extra=()
     if [ "$effect" != "$token" ]; then extra=(--stereo); fi
-    if [ "$size" -le 8192 ]; then extra+=(--poster-tile 4096x1024); fi
+    if [ "$size" -le 8192 ]; then extra+=(--poster-tile auto); fi
     log="$out/log-$size-$token.txt"
     load=$(cut -d' ' -f1 /proc/loadavg)
     /usr/bin/time -v "$demo" render --size "${size}x${size}" --effect "$effect" "${extra[@]}" "${scene_args[@]}" \
@@ -74,20 +75,19 @@ for size in $sizes; do
     line=$(grep "poster: $effect.png:" "$log")
     total=$(echo "$line" | sed -n 's/.*png: \([0-9.]*\) s,.*/\1/p')
     rate=$(echo "$line" | sed -n 's/.* \([0-9.]*\) Mpx\/s.*/\1/p')
-    render=$(echo "$line" | sed -n 's/.*(render and read-back \([0-9.]*\) s,.*/\1/p')
-    png=$(echo "$line" | sed -n 's/.*, PNG \([0-9.]*\) s;.*/\1/p')
-    render_cpu=$(echo "$line" | sed -n 's/.*CPU: render and read-back \([0-9.]*\) s,.*/\1/p')
+    render_cpu=$(echo "$line" | sed -n 's/.*CPU: render \([0-9.]*\) s,.*/\1/p')
+    read_cpu=$(echo "$line" | sed -n 's/.*CPU: .*read-back \([0-9.]*\) s,.*/\1/p')
     png_cpu=$(echo "$line" | sed -n 's/.*CPU: .*PNG \([0-9.]*\) s).*/\1/p')
     rss_kb=$(sed -n 's/.*Maximum resident set size (kbytes): //p' "$log")
     user=$(sed -n 's/.*User time (seconds): //p' "$log")
     sys=$(sed -n 's/.*System time (seconds): //p' "$log")
     bytes=$(stat -c %s "$out/run/$effect.png")
-    awk -v s="$size" -v e="$token" -v l="$layout" -v ld="$load" -v t="$total" -v r="$rate" -v rr="$render" \
-        -v p="$png" -v rc="$render_cpu" -v pc="$png_cpu" -v u="$user" -v sy="$sys" -v kb="$rss_kb" -v b="$bytes" \
+    awk -v s="$size" -v e="$token" -v l="$layout" -v ld="$load" -v t="$total" -v r="$rate" \
+        -v rc="$render_cpu" -v bc="$read_cpu" -v pc="$png_cpu" -v u="$user" -v sy="$sys" -v kb="$rss_kb" -v b="$bytes" \
         'BEGIN {
       mpx = s * s / 1e6;
       printf "| %dx%d | %s | %s | %s | %.1f | %.2f | %.4f | %.4f | %.4f | %.4f | %.4f | %.0f | %.1f |\n", s, s, e, l,
-             ld, t, r, rr / mpx, p / mpx, rc / mpx, pc / mpx, (u + sy) / mpx, kb / 1024, b / 1048576 }'
+             ld, t, r, rc / mpx, bc / mpx, pc / mpx, (rc + bc + pc) / mpx, (u + sy) / mpx, kb / 1024, b / 1048576 }'
     rm -f "$out/run/$effect.png"
   done
 done

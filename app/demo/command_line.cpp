@@ -31,7 +31,7 @@ std::variant<HelpRequest, RenderRequest, Failure> parse_command_line(const std::
     }
     // A poster (above one target, or --poster-tile) is streamed to its file:
     // only its contact-sheet thumbnail is held.
-    const bool poster = request.poster_tile_px || request.width_px > kMaxDirectSidePx ||
+    const bool poster = request.poster || request.width_px > kMaxDirectSidePx ||
                         request.height_px > kMaxDirectSidePx;
     const int held_factor = poster ? (std::max(request.width_px, request.height_px) + kPosterThumbnailSidePx - 1) /
                                          kPosterThumbnailSidePx

@@ -89,11 +89,17 @@ std::optional<Failure> apply_size(Settings& s, const std::string& value) {
 }
 
 std::optional<Failure> apply_poster_tile(Settings& s, const std::string& value) {
+    if (value == "auto") {
+        s.poster = true;
+        s.poster_tile_px.reset();
+        return std::nullopt;
+    }
     const auto size = parse_pair(value, kMaxSidePx);
     if (!size) {
-        return usage("--poster-tile must be WxH with 1.." + std::to_string(kMaxSidePx) + " each, got " +
+        return usage("--poster-tile must be WxH with 1.." + std::to_string(kMaxSidePx) + " each, or auto, got " +
                      quoted(value));
     }
+    s.poster = true;
     s.poster_tile_px = *size;
     return std::nullopt;
 }
@@ -236,8 +242,9 @@ std::vector<Option> session_rows() {
         {"--size", "WxH", "window size, 1..8192 each (default 960x540)", apply_size<kMaxSidePx>, kWindow, "64x48",
          false},
         {"--poster-tile", "WxH",
-         "render as a poster in tiles of WxH px, 1..8192 each (default: a\n"
-         "poster only above one target, in tiles of at most 4096x4096)",
+         "render as a poster in tiles of WxH px, 1..8192 each, or auto: the\n"
+         "automatic tiles (default: a poster only above one target, in tiles\n"
+         "4096 wide, as high as 36 MiB for one tile and one row of tiles allow)",
          apply_poster_tile, kRender, "32x16", false},
         {"--backend", "B", "egl | osmesa (default: egl, falling back to osmesa with a note)", backend, kOffscreen,
          "egl", false},

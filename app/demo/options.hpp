@@ -42,7 +42,10 @@ struct Settings : plan::EffectParams, render::SessionSettings {
     std::vector<plan::Effect> effects; // --effect (window: one, the first shown)
     int msaa_samples = gl::kAutomaticSamples; // --msaa N; default 4 or the context's maximum
     // render.
-    std::optional<std::pair<int, int>> poster_tile_px; // --poster-tile WxH: a poster in tiles of this size
+    // --poster-tile WxH | auto: a poster in tiles of this size, or of the
+    // automatic layout's (render::poster_layout()) even when one target holds the frame.
+    bool poster = false;
+    std::optional<std::pair<int, int>> poster_tile_px; // WxH; empty for auto
     // window.
     gl::Api context_api = gl::Api::Gles;   // --context es|gl: the window's OpenGL ES or desktop core context
     bool inset = false;                    // --inset: start with the frustum view inset shown

@@ -53,16 +53,26 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
     const double tile_mpx = double(layout.tile_width_px) * layout.tile_height_px / 1e6;
     const double frame_mpx = double(layout.width_px) * layout.height_px / 1e6;
 
-    Mark last_sink_end;
+    // The time since `last` goes to what render_poster() was doing then.
+    Mark last;
+    Spent* doing = &timing.rendering;
+    const auto mark = [&](Spent* next) {
+        const Mark now;
+        add_between(*doing, last, now);
+        last = now;
+        doing = next;
+    };
+    const render::PosterSteps steps = [&](render::PosterStep step) {
+        mark(step == render::PosterStep::Draw ? &timing.rendering : &timing.read_back);
+    };
     const render::PosterRowSink sink = [&](const image::Image& rows, int) -> frustum::Status {
-        const Mark begin;
-        add_between(timing.render_and_read_back, last_sink_end, begin);
+        Spent* const was = doing;
+        mark(&timing.compression);
         if (auto written = (*stream)->write_rows(rows); !written) {
             return written;
         }
         thumbnail.add_rows(rows);
-        last_sink_end = Mark{};
-        add_between(timing.compression, begin, last_sink_end);
+        mark(was);
         return {};
     };
     const render::PosterProgress progress = [&](int done, int total) {
@@ -75,11 +85,13 @@ frustum::Result<PosterFile> write_poster(const render::Renderer& renderer, const
                    progress_text(done, total, mpx_done, seconds_since(start)));
     };
     auto drawn = job.stereo ? render::render_stereo_poster(renderer, job.effect, cameras, options, *job.stereo,
-                                                           layout, sink, progress)
-                            : render::render_poster(renderer, job.effect, cameras, options, layout, sink, progress);
+                                                           layout, sink, progress, steps)
+                            : render::render_poster(renderer, job.effect, cameras, options, layout, sink, progress,
+                                                    steps);
     if (!drawn) {
         return drawn.take_error();
     }
+    mark(doing);
     if (auto finished = (*stream)->finish(); !finished) {
         return finished.take_error();
     }

@@ -34,9 +34,10 @@ struct Spent {
 
 // Where the time of a poster went.
 struct PosterTiming {
-    Spent render_and_read_back; // drawing and reading back the tiles: render_poster() between its sink calls
-    Spent compression;          // the rows' PNG compression and the thumbnail (the sink)
-    double total_s = 0.0;       // wall clock, start to finish
+    Spent rendering;      // drawing the tiles (each ended by a glFinish), planning included
+    Spent read_back;      // resolving each tile's samples and reading it into the row of tiles
+    Spent compression;    // the rows' PNG compression and the thumbnail (the sink)
+    double total_s = 0.0; // wall clock, start to finish
 };
 
 struct PosterFile {

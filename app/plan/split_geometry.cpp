@@ -3,22 +3,47 @@
 #include <utility>
 
 namespace plan {
+namespace {
 
-SplitGeometry SplitGeometry::build(const WorldGeometry& placed, float max_edge_m) {
-    SplitGeometry out;
-    out.max_edge_m = edge_within_budget(placed, max_edge_m);
-    out.split = subdivide(placed, out.max_edge_m);
-    std::size_t count = 0;
-    for (const WorldPrimitive& p : out.split.primitives) {
-        count += p.vertices.size();
+// The split of `count` primitives, primitive_at(i) giving the i-th placed:
+// the budget's edge from their extents, then each placed, split and
+// gathered in turn, so that neither the placed nor the split geometry is
+// ever held whole beside the gathered vertices.
+template <class PrimitiveAt>
+SplitGeometry build_split(std::size_t count, const PrimitiveAt& primitive_at, float max_edge_m) {
+    std::vector<PrimitiveExtent> extents;
+    extents.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        extents.push_back(extent_of(primitive_at(i)));
     }
-    out.vertices.reserve(count);
-    out.bases.reserve(out.split.primitives.size());
-    for (const WorldPrimitive& p : out.split.primitives) {
+    SplitGeometry out;
+    out.max_edge_m = edge_within_budget(extents, max_edge_m);
+    out.vertices.reserve(split_vertex_count(extents, out.max_edge_m));
+    out.bases.reserve(count);
+    out.split.primitives.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        WorldPrimitive q = subdivide(primitive_at(i), out.max_edge_m);
         out.bases.push_back(static_cast<std::uint32_t>(out.vertices.size()));
-        out.vertices.insert(out.vertices.end(), p.vertices.begin(), p.vertices.end());
+        out.vertices.insert(out.vertices.end(), q.vertices.begin(), q.vertices.end());
+        q.vertices = {};
+        out.split.primitives.push_back(std::move(q));
     }
     return out;
+}
+
+} // namespace
+
+SplitGeometry SplitGeometry::build(const WorldGeometry& placed, float max_edge_m) {
+    return build_split(
+        placed.primitives.size(), [&](std::size_t i) -> const WorldPrimitive& { return placed.primitives[i]; },
+        max_edge_m);
+}
+
+SplitGeometry SplitGeometry::build(const WorldGeometry& object_space, const std::vector<scene::Instance>& instances,
+                                   float max_edge_m) {
+    return build_split(
+        object_space.primitives.size(),
+        [&](std::size_t i) { return object_space.placed_primitive(i, instances); }, max_edge_m);
 }
 
 const SplitGeometry& SplitGeometryCache::get(const std::vector<scene::Instance>& instances, float max_edge_m) {
@@ -27,7 +52,8 @@ const SplitGeometry& SplitGeometryCache::get(const std::vector<scene::Instance>&
         same = instances[i].world == worlds_[i];
     }
     if (!same) {
-        current_ = SplitGeometry::build(object_space_.placed(instances), max_edge_m);
+        current_ = {}; // the old split goes before the new one is built
+        current_ = SplitGeometry::build(object_space_, instances, max_edge_m);
         worlds_.clear();
         for (const scene::Instance& instance : instances) {
             worlds_.push_back(instance.world);

@@ -17,7 +17,10 @@
 namespace plan {
 
 struct SplitGeometry {
-    WorldGeometry split;                // placed and subdivided; its primitives' own vertices
+    // Placed and subdivided: each primitive's indices (into its own
+    // vertices, which are in `vertices` from bases[i], not here: one copy of
+    // the split's vertices, not two), material and instance.
+    WorldGeometry split;
     std::vector<WorldVertex> vertices;  // every primitive's vertices, in primitive order
     std::vector<std::uint32_t> bases;   // bases[i]: split.primitives[i]'s first vertex in `vertices`
 
@@ -25,8 +28,17 @@ struct SplitGeometry {
 
     // `placed` split to max_edge_m (<= 0: not split), or to the longer edge
     // that keeps it within kMaxSplitTriangles (edge_within_budget()), and
-    // gathered.
+    // gathered a primitive at a time (the split is never held twice).
     static SplitGeometry build(const WorldGeometry& placed, float max_edge_m);
+    // The same from object-space geometry and the instances that place it
+    // (WorldGeometry::placed()), placed a primitive at a time.
+    static SplitGeometry build(const WorldGeometry& object_space, const std::vector<scene::Instance>& instances,
+                               float max_edge_m);
+
+    // The vertices of split.primitives[i]: `vertices` from bases[i] to end_of(i).
+    std::size_t end_of(std::size_t i) const {
+        return i + 1 < bases.size() ? bases[i + 1] : vertices.size();
+    }
 };
 
 // SplitGeometry for the instances as they are now, rebuilt only when an

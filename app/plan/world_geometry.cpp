@@ -105,20 +105,27 @@ WorldGeometry WorldGeometry::in_object_space(const scene::Scene& scene) {
     return out;
 }
 
+WorldPrimitive WorldGeometry::placed_primitive(std::size_t i, const std::vector<scene::Instance>& instances) const {
+    WorldPrimitive p = primitives[i];
+    const glm::mat4& model = instances.at(static_cast<std::size_t>(p.instance)).world;
+    const glm::mat3 normals = normal_matrix(model);
+    for (WorldVertex& v : p.vertices) {
+        v.position = glm::vec3(model * glm::vec4(v.position, 1.0f));
+        v.normal = normals * v.normal;
+    }
+    if (glm::determinant(glm::mat3(model)) < 0.0f) { // glTF: a mirroring node reverses the winding
+        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+            std::swap(p.indices[t + 1], p.indices[t + 2]);
+        }
+    }
+    return p;
+}
+
 WorldGeometry WorldGeometry::placed(const std::vector<scene::Instance>& instances) const {
-    WorldGeometry out = *this;
-    for (WorldPrimitive& p : out.primitives) {
-        const glm::mat4& model = instances.at(static_cast<std::size_t>(p.instance)).world;
-        const glm::mat3 normals = normal_matrix(model);
-        for (WorldVertex& v : p.vertices) {
-            v.position = glm::vec3(model * glm::vec4(v.position, 1.0f));
-            v.normal = normals * v.normal;
-        }
-        if (glm::determinant(glm::mat3(model)) < 0.0f) { // glTF: a mirroring node reverses the winding
-            for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-                std::swap(p.indices[t + 1], p.indices[t + 2]);
-            }
-        }
+    WorldGeometry out;
+    out.primitives.reserve(primitives.size());
+    for (std::size_t i = 0; i < primitives.size(); ++i) {
+        out.primitives.push_back(placed_primitive(i, instances));
     }
     return out;
 }
@@ -134,49 +141,103 @@ int subdivision(float longest_m, float max_edge_m) {
     return static_cast<int>(std::clamp(ratio, 1.0f, static_cast<float>(kMaxSubdivision)));
 }
 
-std::size_t split_count(const std::vector<float>& longest_m, const std::vector<std::size_t>& triangles,
-                        float max_edge_m, bool& any_split) {
+std::size_t split_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m, bool& any_split) {
     std::size_t total = 0;
     any_split = false;
-    for (std::size_t i = 0; i < longest_m.size(); ++i) {
-        const auto n = static_cast<std::size_t>(max_edge_m > 0.0f ? subdivision(longest_m[i], max_edge_m) : 1);
+    for (const PrimitiveExtent& e : extents) {
+        const auto n = static_cast<std::size_t>(max_edge_m > 0.0f ? subdivision(e.longest_edge_m, max_edge_m) : 1);
         any_split = any_split || n > 1;
-        total += triangles[i] * n * n;
+        total += e.triangles * n * n;
     }
     return total;
 }
 
-void edges_and_counts(const WorldGeometry& geometry, std::vector<float>& longest_m,
-                      std::vector<std::size_t>& triangles) {
+std::vector<PrimitiveExtent> extents_of(const WorldGeometry& geometry) {
+    std::vector<PrimitiveExtent> extents;
+    extents.reserve(geometry.primitives.size());
     for (const WorldPrimitive& p : geometry.primitives) {
-        longest_m.push_back(longest_edge_m(p));
-        triangles.push_back(p.indices.size() / 3);
+        extents.push_back(extent_of(p));
     }
+    return extents;
 }
 
 } // namespace
 
-std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m) {
-    std::vector<float> longest_m;
-    std::vector<std::size_t> triangles;
-    edges_and_counts(geometry, longest_m, triangles);
-    bool any_split = false;
-    return split_count(longest_m, triangles, max_edge_m, any_split);
+PrimitiveExtent extent_of(const WorldPrimitive& primitive) {
+    return {longest_edge_m(primitive), primitive.indices.size() / 3, primitive.vertices.size()};
 }
 
-float edge_within_budget(const WorldGeometry& geometry, float max_edge_m, std::size_t max_triangles) {
+std::size_t split_triangle_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m) {
+    bool any_split = false;
+    return split_count(extents, max_edge_m, any_split);
+}
+
+std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m) {
+    return split_triangle_count(extents_of(geometry), max_edge_m);
+}
+
+std::size_t split_vertex_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m) {
+    std::size_t total = 0;
+    for (const PrimitiveExtent& e : extents) {
+        const auto n = static_cast<std::size_t>(max_edge_m > 0.0f ? subdivision(e.longest_edge_m, max_edge_m) : 1);
+        total += n == 1 ? e.vertices : e.triangles * (n + 1) * (n + 2) / 2;
+    }
+    return total;
+}
+
+float edge_within_budget(const std::vector<PrimitiveExtent>& extents, float max_edge_m, std::size_t max_triangles) {
     if (!(max_edge_m > 0.0f)) {
         return max_edge_m;
     }
-    std::vector<float> longest_m;
-    std::vector<std::size_t> triangles;
-    edges_and_counts(geometry, longest_m, triangles);
     float edge_m = max_edge_m;
     bool any_split = false;
-    while (split_count(longest_m, triangles, edge_m, any_split) > max_triangles && any_split) {
+    while (split_count(extents, edge_m, any_split) > max_triangles && any_split) {
         edge_m *= 2.0f;
     }
     return edge_m;
+}
+
+float edge_within_budget(const WorldGeometry& geometry, float max_edge_m, std::size_t max_triangles) {
+    return edge_within_budget(extents_of(geometry), max_edge_m, max_triangles);
+}
+
+WorldPrimitive subdivide(const WorldPrimitive& p, float max_edge_m) {
+    const int n = max_edge_m > 0.0f ? subdivision(longest_edge_m(p), max_edge_m) : 1;
+    if (n == 1) {
+        return p;
+    }
+    WorldPrimitive q = p;
+    q.vertices.clear();
+    q.indices.clear();
+    const std::size_t triangles = p.indices.size() / 3;
+    const auto side = static_cast<std::size_t>(n);
+    q.vertices.reserve(triangles * (side + 1) * (side + 2) / 2);
+    q.indices.reserve(triangles * side * side * 3);
+    // Grid point (j, k) of a triangle: weights (n - j - k, j, k) / n.
+    const auto grid_index = [n](int j, int k) { return static_cast<std::uint32_t>(j * (n + 1) - j * (j - 1) / 2 + k); };
+    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        const WorldVertex& a = p.vertices[p.indices[t]];
+        const WorldVertex& b = p.vertices[p.indices[t + 1]];
+        const WorldVertex& c = p.vertices[p.indices[t + 2]];
+        const auto base = static_cast<std::uint32_t>(q.vertices.size());
+        for (int j = 0; j <= n; ++j) {
+            for (int k = 0; k <= n - j; ++k) {
+                q.vertices.push_back(blend(a, b, c, n - j - k, j, k, n));
+            }
+        }
+        for (int j = 0; j < n; ++j) {
+            for (int k = 0; k < n - j; ++k) {
+                // Same orientation as (a, b, c): steps in j go towards b, in k towards c.
+                q.indices.insert(q.indices.end(),
+                                 {base + grid_index(j, k), base + grid_index(j + 1, k), base + grid_index(j, k + 1)});
+                if (k + 1 < n - j) {
+                    q.indices.insert(q.indices.end(), {base + grid_index(j + 1, k), base + grid_index(j + 1, k + 1),
+                                                       base + grid_index(j, k + 1)});
+                }
+            }
+        }
+    }
+    return q;
 }
 
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m) {
@@ -184,40 +245,9 @@ WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m) {
         return geometry;
     }
     WorldGeometry out;
+    out.primitives.reserve(geometry.primitives.size());
     for (const WorldPrimitive& p : geometry.primitives) {
-        const int n = subdivision(longest_edge_m(p), max_edge_m);
-        if (n == 1) {
-            out.primitives.push_back(p);
-            continue;
-        }
-        WorldPrimitive q = p;
-        q.vertices.clear();
-        q.indices.clear();
-        // Grid point (j, k) of a triangle: weights (n - j - k, j, k) / n.
-        const auto grid_index = [n](int j, int k) { return static_cast<std::uint32_t>(j * (n + 1) - j * (j - 1) / 2 + k); };
-        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-            const WorldVertex& a = p.vertices[p.indices[t]];
-            const WorldVertex& b = p.vertices[p.indices[t + 1]];
-            const WorldVertex& c = p.vertices[p.indices[t + 2]];
-            const auto base = static_cast<std::uint32_t>(q.vertices.size());
-            for (int j = 0; j <= n; ++j) {
-                for (int k = 0; k <= n - j; ++k) {
-                    q.vertices.push_back(blend(a, b, c, n - j - k, j, k, n));
-                }
-            }
-            for (int j = 0; j < n; ++j) {
-                for (int k = 0; k < n - j; ++k) {
-                    // Same orientation as (a, b, c): steps in j go towards b, in k towards c.
-                    q.indices.insert(q.indices.end(),
-                                     {base + grid_index(j, k), base + grid_index(j + 1, k), base + grid_index(j, k + 1)});
-                    if (k + 1 < n - j) {
-                        q.indices.insert(q.indices.end(), {base + grid_index(j + 1, k), base + grid_index(j + 1, k + 1),
-                                                           base + grid_index(j, k + 1)});
-                    }
-                }
-            }
-        }
-        out.primitives.push_back(std::move(q));
+        out.primitives.push_back(subdivide(p, max_edge_m));
     }
     return out;
 }

@@ -48,6 +48,8 @@ struct WorldGeometry {
     // Object-space geometry moved to world space by instances[p.instance].world
     // for each primitive p; `instances` must be the scene's, possibly moved.
     WorldGeometry placed(const std::vector<scene::Instance>& instances) const;
+    // primitives[i] of it alone (a split built a primitive at a time).
+    WorldPrimitive placed_primitive(std::size_t i, const std::vector<scene::Instance>& instances) const;
 };
 
 // Each primitive's triangles split into n x n smaller ones (a uniform
@@ -56,23 +58,39 @@ struct WorldGeometry {
 // edges split alike, so the surface stays watertight. max_edge_m <= 0: a copy.
 inline constexpr int kMaxSubdivision = 64;
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m);
+// One primitive of it, split as subdivide() splits it there.
+WorldPrimitive subdivide(const WorldPrimitive& primitive, float max_edge_m);
 
 // The most triangles a split may hold (SplitGeometry): 2^20, about 150 MB
-// for the split copy, the gathered vertices and the GPU's (48-byte
+// for the gathered vertices and as much for the GPU's copy (48-byte
 // vertices, (n + 1)(n + 2) / 2 of them per n x n split triangle). With one n
 // per primitive a large scene's long primitives (a city block's pavement, a
 // ground plane) would split everything on them 64 x 64 times: 400 000
 // triangles became 1.6e9 (24 GB) at the 0.25 m default edge.
 inline constexpr std::size_t kMaxSplitTriangles = std::size_t(1) << 20;
 
-// The triangles subdivide(geometry, max_edge_m) gives.
+// What the split's budget needs of one primitive: subdivide() splits it by
+// its longest edge, into n x n triangles of (n + 1)(n + 2) / 2 vertices each.
+struct PrimitiveExtent {
+    float longest_edge_m = 0.0f;
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+};
+PrimitiveExtent extent_of(const WorldPrimitive& primitive);
+
+// The triangles and the vertices subdivide(geometry, max_edge_m) gives, from
+// the geometry or from its primitives' extents.
 std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m);
+std::size_t split_triangle_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m);
+std::size_t split_vertex_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m);
 
 // max_edge_m, doubled until subdivide() gives at most max_triangles
 // triangles (n only falls as the edge grows), or until no primitive is
 // split (n = 1 everywhere: the geometry's own count, kept even when that is
 // over). max_edge_m <= 0 (no split) is returned as is.
 float edge_within_budget(const WorldGeometry& geometry, float max_edge_m,
+                         std::size_t max_triangles = kMaxSplitTriangles);
+float edge_within_budget(const std::vector<PrimitiveExtent>& extents, float max_edge_m,
                          std::size_t max_triangles = kMaxSplitTriangles);
 
 } // namespace plan

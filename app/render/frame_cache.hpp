@@ -8,11 +8,19 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <optional>
 
 namespace render {
 
+struct NonAffineUpload; // non_affine_pass.hpp
+
 struct FrameCache {
+    FrameCache();
+    ~FrameCache();
+    FrameCache(FrameCache&&) noexcept;
+    FrameCache& operator=(FrameCache&&) noexcept;
+
     // The curved mirror's patch atlas (curved_pass.cpp): planned for the
     // whole frame, so the same for every tile; up to 4096 x 4096 texels.
     std::optional<gl::OffscreenTarget> curved_atlas;
@@ -20,6 +28,14 @@ struct FrameCache {
     // (mirror_pass.cpp): it spans the mirror rectangle, not the screen, so
     // every tile samples the same one; resolved colour only.
     std::optional<gl::OffscreenTarget> mirror_reflection;
+    // The recursion views' drawing target (recursion_pass.cpp): multisampled
+    // like the frame, as large as the largest tile so far; each view of each
+    // tile draws into its bottom-left part and is blitted into a colour-only
+    // texture of its own, so one multisampled target serves the whole poster.
+    std::optional<gl::OffscreenTarget> recursion_canvas;
+    // The non-affine pass's triangles on the GPU (non_affine_pass.cpp): the
+    // eq. 36 cull is the whole frame's, so the tiles draw the same buffers.
+    std::unique_ptr<NonAffineUpload> non_affine;
 };
 
 } // namespace render

@@ -12,6 +12,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <memory>
+#include <optional>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -20,14 +22,6 @@ namespace render {
 namespace {
 
 constexpr const char* kDraw = "render::draw_non_affine_frame()";
-
-// A triangle range of the index buffer and how to draw it.
-struct Range {
-    GLsizei first = 0, count = 0;
-    const plan::WorldPrimitive* primitive = nullptr;
-    AlphaGroup group = AlphaGroup::Opaque;
-    float depth_m = 0.0f; // BLEND: distance of its centre behind the near plane
-};
 
 void set_material(const PassContext& ctx, const NonAffineProgram& p, const plan::WorldPrimitive& primitive) {
     const gl::Functions& fn = ctx.fn;
@@ -115,31 +109,10 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
                                  options);
 }
 
-frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
-                                                      const plan::SplitGeometry& geometry,
-                                                      const frustum::NonAffineFrustum<float>& frustum,
-                                                      const plan::NonAffineOptions& options) {
+frustum::Result<NonAffineUpload> upload_non_affine(const PassContext& ctx, const plan::SplitGeometry& geometry,
+                                                  const frustum::NonAffineFrustum<float>& frustum,
+                                                  const plan::NonAffineOptions& options) {
     const NonAffineBatch batch = batch_non_affine(geometry, frustum, options);
-    std::vector<Range> ranges;
-    for (const NonAffineBatch::Range& kept : batch.ranges) {
-        const plan::WorldPrimitive& p = geometry.split.primitives[kept.primitive];
-        Range range{static_cast<GLsizei>(kept.first), static_cast<GLsizei>(kept.count), &p};
-        range.group = alpha_group(ctx.scene.material(p.material).alpha_mode);
-        if (range.group == AlphaGroup::Blend && !p.vertices.empty()) {
-            glm::vec3 low = p.vertices.front().position, high = low;
-            for (const plan::WorldVertex& v : p.vertices) {
-                low = glm::min(low, v.position);
-                high = glm::max(high, v.position);
-            }
-            // The near plane is outward (plane 4): its distance is negative inside.
-            range.depth_m = -frustum.plane(4).distance(0.5f * (low + high));
-        }
-        ranges.push_back(range);
-    }
-    const std::vector<plan::WorldVertex>& vertices = geometry.vertices;
-    const std::vector<std::uint32_t>& indices = batch.indices;
-    const NonAffineStats stats = batch.stats;
-
     const gl::Functions& fn = ctx.fn;
     auto vertex_array = gl::VertexArray::create(fn);
     auto vertex_buffer = gl::Buffer::create(fn);
@@ -148,25 +121,77 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
         return frustum::Error{std::string(kDraw) + ": " + vertex_array.error() + vertex_buffer.error() +
                               index_buffer.error()};
     }
+    NonAffineUpload upload{std::move(*vertex_array), std::move(*vertex_buffer), std::move(*index_buffer), {},
+                           batch.stats};
+    for (const NonAffineBatch::Range& kept : batch.ranges) {
+        const plan::WorldPrimitive& p = geometry.split.primitives[kept.primitive];
+        NonAffineUpload::Range range{static_cast<GLsizei>(kept.first), static_cast<GLsizei>(kept.count), &p};
+        range.group = alpha_group(ctx.scene.material(p.material).alpha_mode);
+        const std::size_t first = geometry.bases[kept.primitive], end = geometry.end_of(kept.primitive);
+        if (range.group == AlphaGroup::Blend && first < end) {
+            glm::vec3 low = geometry.vertices[first].position, high = low;
+            for (std::size_t v = first; v < end; ++v) {
+                low = glm::min(low, geometry.vertices[v].position);
+                high = glm::max(high, geometry.vertices[v].position);
+            }
+            // The near plane is outward (plane 4): its distance is negative inside.
+            range.depth_m = -frustum.plane(4).distance(0.5f * (low + high));
+        }
+        upload.ranges.push_back(range);
+    }
+    // Opaque, masked, then blended from the farthest to the nearest (alpha_order.hpp).
+    std::stable_sort(upload.ranges.begin(), upload.ranges.end(),
+                     [](const NonAffineUpload::Range& a, const NonAffineUpload::Range& b) {
+                         return a.group != b.group ? a.group < b.group
+                                                   : a.group == AlphaGroup::Blend && a.depth_m > b.depth_m;
+                     });
+
+    fn.BindVertexArray(upload.vertex_array.id());
+    fn.BindBuffer(GL_ARRAY_BUFFER, upload.vertex_buffer.id());
+    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(geometry.vertices.size() * sizeof(plan::WorldVertex)),
+                  geometry.vertices.data(), GL_STREAM_DRAW);
+    fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, upload.index_buffer.id());
+    static_assert(sizeof(GLuint) == sizeof(std::uint32_t));
+    fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(batch.indices.size() * sizeof(GLuint)),
+                  batch.indices.data(), GL_STREAM_DRAW);
+    set_vertex_layout(fn);
+    fn.BindVertexArray(0);
+    fn.BindBuffer(GL_ARRAY_BUFFER, 0);
+    if (auto status = gl::check_error(fn, kDraw); !status) {
+        return status.take_error();
+    }
+    return upload;
+}
+
+frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
+                                                      const plan::SplitGeometry& geometry,
+                                                      const frustum::NonAffineFrustum<float>& frustum,
+                                                      const plan::NonAffineOptions& options) {
+    // A poster's tiles draw the frame's one upload (the cull and the
+    // buffers are the whole frame's: the window only crops in the shader).
+    std::optional<NonAffineUpload> own;
+    const NonAffineUpload* upload = ctx.frame_cache ? ctx.frame_cache->non_affine.get() : nullptr;
+    if (!upload) {
+        auto made = upload_non_affine(ctx, geometry, frustum, options);
+        if (!made) {
+            return made.take_error();
+        }
+        if (ctx.frame_cache) {
+            ctx.frame_cache->non_affine = std::make_unique<NonAffineUpload>(std::move(*made));
+            upload = ctx.frame_cache->non_affine.get();
+        } else {
+            own = std::move(*made);
+            upload = &*own;
+        }
+    }
+
+    const gl::Functions& fn = ctx.fn;
     frame.bind();
     begin_frame(ctx);
-    fn.BindVertexArray(vertex_array->id());
-    fn.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer->id());
-    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(plan::WorldVertex)),
-                  vertices.data(), GL_STREAM_DRAW);
-    fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer->id());
-    static_assert(sizeof(GLuint) == sizeof(std::uint32_t));
-    fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)), indices.data(),
-                  GL_STREAM_DRAW);
-    set_vertex_layout(fn);
-
-    // Opaque, masked, then blended from the farthest to the nearest (alpha_order.hpp).
-    std::stable_sort(ranges.begin(), ranges.end(), [](const Range& a, const Range& b) {
-        return a.group != b.group ? a.group < b.group : a.group == AlphaGroup::Blend && a.depth_m > b.depth_m;
-    });
+    fn.BindVertexArray(upload->vertex_array.id());
     const NonAffineProgram* current = nullptr;
     bool blending = false;
-    for (const Range& range : ranges) {
+    for (const NonAffineUpload::Range& range : upload->ranges) {
         const NonAffineProgram& p = ctx.programs.non_affine_program(range.group == AlphaGroup::Mask);
         if (&p != current) {
             p.use();
@@ -185,13 +210,12 @@ frustum::Result<NonAffineStats> draw_non_affine_frame(const PassContext& ctx, co
         end_blending(fn);
     }
     fn.BindVertexArray(0);
-    fn.BindBuffer(GL_ARRAY_BUFFER, 0);
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
     if (auto status = gl::check_error(fn, kDraw); !status) {
         return status.take_error();
     }
-    return stats;
+    return upload->stats;
 }
 
 } // namespace render

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "plan/non_affine_frustum.hpp"
+#include "render/alpha_order.hpp"
 #include "render/pass_context.hpp"
 #include "plan/split_geometry.hpp"
 #include "plan/world_geometry.hpp"
@@ -23,6 +24,7 @@
 #include <frustum/matrix_pair.hpp>
 #include <frustum/non_affine.hpp>
 #include <frustum/result.hpp>
+#include <gl/objects.hpp>
 #include <gl/offscreen_target.hpp>
 
 #include <cstddef>
@@ -55,7 +57,29 @@ struct NonAffineBatch {
 NonAffineBatch batch_non_affine(const plan::SplitGeometry& geometry, const frustum::NonAffineFrustum<float>& frustum,
                                 const plan::NonAffineOptions& options);
 
-// Draws the whole frame into `frame` (left bound). The frustum's planes are
+// The CPU part on the GPU: the split's vertices and the batch's indices in
+// one vertex array, with the ranges in draw order (opaque, masked, then
+// blended back to front). A poster keeps one for all its tiles
+// (FrameCache::non_affine).
+struct NonAffineUpload {
+    struct Range {
+        GLsizei first = 0, count = 0; // into the index buffer
+        const plan::WorldPrimitive* primitive = nullptr; // into the SplitGeometry uploaded
+        AlphaGroup group = AlphaGroup::Opaque;
+        float depth_m = 0.0f; // BLEND: distance of its centre behind the near plane
+    };
+    gl::VertexArray vertex_array;
+    gl::Buffer vertex_buffer;
+    gl::Buffer index_buffer;
+    std::vector<Range> ranges;
+    NonAffineStats stats;
+};
+frustum::Result<NonAffineUpload> upload_non_affine(const PassContext& ctx, const plan::SplitGeometry& geometry,
+                                                  const frustum::NonAffineFrustum<float>& frustum,
+                                                  const plan::NonAffineOptions& options);
+
+// Draws the whole frame into `frame` (left bound); with ctx.frame_cache
+// the cache's upload, made on its first tile. The frustum's planes are
 // used; its depth range is not: s = 0..1 goes to the GPU's depth range
 // (ctx.depth). `geometry` is the scene's triangles split to
 // options.max_edge_m (SplitGeometry::build(), SplitGeometryCache).

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,11 +36,20 @@ constexpr const char* kRender = "render::render_poster()";
 
 // The largest tile side used without --poster-tile, whatever the context allows.
 constexpr int kMaxAutoTileSidePx = 4096;
-// One row of tiles in memory (width_px x tile_height_px RGBA8) at most, and
-// one tile's pixels at most: with 4x MSAA llvmpipe keeps a tile's colour
-// and depth samples in RAM (4 Mpx x 4 samples x 8 bytes = 128 MiB).
-constexpr std::int64_t kRowBudgetBytes = std::int64_t(32) << 20;
-constexpr std::int64_t kTileBudgetPx = std::int64_t(4) << 20;
+// What a poster holds for its tiles, whatever its size: one tile's target
+// (with 4x MSAA llvmpipe keeps its colour and depth samples in RAM: 32
+// bytes a pixel) plus one row of tiles (frame width x tile height, RGBA8).
+// The tile height follows from it: 4096 x 256 tiles for a 4096-wide frame
+// (32 + 4 MiB), 4096 x 192 at 16384, 4096 x 144 at 32768, 4096 x 96 at
+// 65536, so that a poster's memory does not grow with its width any more
+// than with its height; and the tile's own fixed cost (making the target
+// and first touching its samples: 0.43 CPU s for 4096 x 1024 on this
+// machine, 0.1 for 4096 x 256) stays small (docs/performance.md, "Posters").
+constexpr std::int64_t kTileBytesPerPx = 4 * 8;
+constexpr std::int64_t kPosterBudgetBytes = std::int64_t(36) << 20;
+// Tile heights are cut to a multiple of this (when taller): the seam and
+// downsampling tests divide a poster's tiles by 2 and 4.
+constexpr int kTileHeightStepPx = 16;
 
 std::string size_text(int width_px, int height_px) {
     return std::to_string(width_px) + "x" + std::to_string(height_px);
@@ -66,14 +74,17 @@ frustum::Status check_frame_size(int width_px, int height_px, const char* where)
     return {};
 }
 
-// Copies a tile's image (rows top to bottom) into `rows` at column x_px.
-void copy_tile(const image::Image& tile, image::Image& rows, int x_px) {
-    const std::size_t tile_row = static_cast<std::size_t>(tile.width) * 4;
-    const std::size_t row = static_cast<std::size_t>(rows.width) * 4;
-    for (int y = 0; y < tile.height; ++y) {
-        std::memcpy(rows.rgba.data() + static_cast<std::size_t>(y) * row + static_cast<std::size_t>(x_px) * 4,
-                    tile.rgba.data() + static_cast<std::size_t>(y) * tile_row, tile_row);
+// The automatic tile's height for tiles tile_width_px wide in rows of tiles
+// row_width_px wide: within the budget, the frame and the context.
+int auto_tile_height(int row_width_px, int tile_width_px, int height_px, int largest_h) {
+    const std::int64_t by_budget =
+        kPosterBudgetBytes / (std::int64_t(tile_width_px) * kTileBytesPerPx + std::int64_t(row_width_px) * 4);
+    std::int64_t h = std::min({by_budget, std::int64_t(height_px), std::int64_t(largest_h),
+                               std::int64_t(kMaxAutoTileSidePx)});
+    if (h > kTileHeightStepPx && h < height_px) {
+        h -= h % kTileHeightStepPx;
     }
+    return static_cast<int>(std::max<std::int64_t>(1, h));
 }
 
 } // namespace
@@ -99,11 +110,7 @@ frustum::Result<PosterLayout> poster_layout(const gl::Functions& fn, int width_p
         return layout;
     }
     layout.tile_width_px = std::min({width_px, largest_w, kMaxAutoTileSidePx});
-    const std::int64_t by_row = kRowBudgetBytes / (std::int64_t(width_px) * 4);
-    const std::int64_t by_tile = kTileBudgetPx / layout.tile_width_px;
-    layout.tile_height_px = static_cast<int>(std::max<std::int64_t>(
-        1, std::min({by_row, by_tile, std::int64_t(height_px), std::int64_t(largest_h),
-                     std::int64_t(kMaxAutoTileSidePx)})));
+    layout.tile_height_px = auto_tile_height(width_px, layout.tile_width_px, height_px, largest_h);
     return layout;
 }
 
@@ -134,7 +141,7 @@ frustum::Status check_tile(const PosterLayout& layout, int frame_width_px, const
 // The rows of tiles of every view side by side, top to bottom.
 frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const std::vector<PosterView>& views,
                             const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
-                            const PosterProgress& progress) {
+                            const PosterProgress& progress, const PosterSteps& steps) {
     const gl::Functions& fn = renderer.functions();
     auto samples = gl::choose_samples(fn, options.msaa_samples);
     if (!samples) {
@@ -152,13 +159,15 @@ frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const
     // What every tile of one view draws the same (the curved mirror's
     // atlas, the rectangle method's reflection): one cache per view.
     std::vector<FrameCache> caches(views.size());
+    // One row of tiles, kept from row to row (cut for the last one): every
+    // tile is read back into its columns, so the row needs no clearing.
+    image::Image strip{layout.width_px, 0, {}};
     int done = 0;
     for (int row = 0; row < rows; ++row) {
         const int top_px = row * layout.tile_height_px; // from the frame's top
         const int height_px = std::min(layout.tile_height_px, layout.height_px - top_px);
-        image::Image strip{layout.width_px, height_px,
-                           std::vector<std::uint8_t>(static_cast<std::size_t>(layout.width_px) *
-                                                     static_cast<std::size_t>(height_px) * 4)};
+        strip.height = height_px;
+        strip.rgba.resize(static_cast<std::size_t>(layout.width_px) * static_cast<std::size_t>(height_px) * 4);
         for (std::size_t v = 0; v < views.size(); ++v) {
             const PosterView& view = views[v];
             for (int x_px = 0; x_px < view.width_px; x_px += layout.tile_width_px) {
@@ -173,6 +182,9 @@ frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const
                     target = std::move(*made);
                 }
                 // GL counts rows from the bottom.
+                if (steps) {
+                    steps(PosterStep::Draw);
+                }
                 const FrameWindow window{
                     view.width_px, layout.height_px,
                     plan::PixelRect{x_px, layout.height_px - top_px - height_px, width_px, height_px}};
@@ -180,11 +192,13 @@ frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const
                     !status) {
                     return status;
                 }
-                auto tile = target->read_rgba8();
-                if (!tile) {
-                    return tile.take_error_in(kRender);
+                if (steps) {
+                    fn.Finish();
+                    steps(PosterStep::ReadBack);
                 }
-                copy_tile(*tile, strip, view.x_px + x_px);
+                if (auto read = target->read_rgba8_into(strip, view.x_px + x_px); !read) {
+                    return read.take_error_in(kRender);
+                }
                 ++done;
                 if (progress) {
                     progress(done, total);
@@ -207,11 +221,12 @@ std::string odd_width(const char* where, int width_px) {
 
 frustum::Status render_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout, const PosterRowSink& sink,
-                              const PosterProgress& progress) {
+                              const PosterProgress& progress, const PosterSteps& steps) {
     if (auto status = check_tile(layout, layout.width_px, kRender); !status) {
         return status;
     }
-    return draw_poster(renderer, effect, {PosterView{&cameras, 0, layout.width_px}}, options, layout, sink, progress);
+    return draw_poster(renderer, effect, {PosterView{&cameras, 0, layout.width_px}}, options, layout, sink, progress,
+                       steps);
 }
 
 frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int width_px, int height_px,
@@ -225,13 +240,18 @@ frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int 
         return layout.take_error();
     }
     layout->tile_width_px = std::min(layout->tile_width_px, width_px / 2);
+    if (!requested_tile_px) {
+        // The tile budget, as a mono poster's tiles have it.
+        layout->tile_height_px =
+            auto_tile_height(width_px, layout->tile_width_px, height_px, largest_target(fn).second);
+    }
     return layout;
 }
 
 frustum::Status render_stereo_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                                      const RenderOptions& options, const plan::StereoRig& rig,
                                      const PosterLayout& layout, const PosterRowSink& sink,
-                                     const PosterProgress& progress) {
+                                     const PosterProgress& progress, const PosterSteps& steps) {
     constexpr const char* kStereo = "render::render_stereo_poster()";
     if (layout.width_px % 2 != 0) {
         return frustum::Error{odd_width(kStereo, layout.width_px)};
@@ -246,7 +266,7 @@ frustum::Status render_stereo_poster(const Renderer& renderer, plan::Effect effe
     }
     return draw_poster(renderer, effect,
                        {PosterView{&eyes->left, 0, eye_width_px}, PosterView{&eyes->right, eye_width_px, eye_width_px}},
-                       options, layout, sink, progress);
+                       options, layout, sink, progress, steps);
 }
 
 } // namespace render

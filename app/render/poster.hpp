@@ -34,10 +34,12 @@ struct PosterLayout {
 
 // The tile size for a width_px x height_px frame: the requested one
 // (--poster-tile), else the largest the context's targets hold (at most
-// 4096 x 4096) with the tile height cut so that one row of tiles (width_px x
-// tile_height_px RGBA8) stays within 32 MiB and one tile within 4 Mpx (with
-// 4x MSAA llvmpipe holds a tile's samples in RAM: 128 MiB), e.g. 4096 x 1024
-// tiles for a 4096-wide frame, 4096 x 256 for 32768, 4096 x 128 for 65536.
+// 4096 wide) with the tile height cut so that one tile's multisampled
+// target (32 bytes a pixel with 4x MSAA: llvmpipe holds the samples in RAM)
+// and one row of tiles (width_px x tile_height_px RGBA8) stay within 36 MiB
+// together, the height a multiple of 16: e.g. 4096 x 256 tiles for a
+// 4096-wide frame, 4096 x 192 for 16384, 4096 x 144 for 32768, 4096 x 96 for
+// 65536. The memory for the tiles does not grow with the frame.
 // A requested tile is cut to the frame.
 // Errors name the value and the limit, e.g.
 // "render::poster_layout(): tile 9000x512 exceeds the context's largest target 8192x8192".
@@ -52,6 +54,11 @@ using PosterRowSink = std::function<frustum::Status(const image::Image& rows, in
 // Called after each tile with the tiles done so far and in all.
 using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
 
+// Told as each tile's drawing starts and as its read-back starts (after a
+// glFinish, so that the drawing is done by then): a caller times the two apart.
+enum class PosterStep { Draw, ReadBack };
+using PosterSteps = std::function<void(PosterStep)>;
+
 // Renders `effect` as a layout.width_px x layout.height_px frame
 // (options.width_px / height_px are ignored; options.msaa_samples as in
 // Renderer::render()); `cameras` are made for the whole frame's aspect
@@ -65,11 +72,14 @@ using PosterProgress = std::function<void(int tiles_done, int tiles_total)>;
 // error, the sink's error.
 frustum::Status render_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                               const RenderOptions& options, const PosterLayout& layout,
-                              const PosterRowSink& sink, const PosterProgress& progress = {});
+                              const PosterRowSink& sink, const PosterProgress& progress = {},
+                              const PosterSteps& steps = {});
 
 // A stereo poster's layout: poster_layout() of the whole layout (both eyes:
 // the row budget counts the whole width), the tile width then cut to one
-// eye's (width_px / 2), so that no tile straddles the eyes. Errors: the
+// eye's (width_px / 2), so that no tile straddles the eyes, and an automatic
+// tile's height then as high as the same budget allows (2048 x 448 for a
+// 4096-wide pair). Errors: the
 // poster_layout() ones, an odd width, e.g.
 // "render::stereo_poster_layout(): the width must be even (two eyes side by side), got 9001 px".
 frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int width_px, int height_px,
@@ -88,6 +98,6 @@ frustum::Result<PosterLayout> stereo_poster_layout(const gl::Functions& fn, int 
 frustum::Status render_stereo_poster(const Renderer& renderer, plan::Effect effect, const plan::Cameras& cameras,
                                      const RenderOptions& options, const plan::StereoRig& rig,
                                      const PosterLayout& layout, const PosterRowSink& sink,
-                                     const PosterProgress& progress = {});
+                                     const PosterProgress& progress = {}, const PosterSteps& steps = {});
 
 } // namespace render

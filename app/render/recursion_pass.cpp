@@ -60,16 +60,20 @@ struct Frame {
     RecursionStats* stats;
     std::vector<ViewPart> parts;                              // per node
     std::vector<std::optional<gl::OffscreenTarget>> textures; // per node, alive until its parent is drawn
-    // A poster's tile (ctx.frame_cache): memory before reuse. Each view's
-    // target keeps only its resolved colour once drawn and is not pooled, so
-    // one multisampled target is alive at a time instead of a frame's set
-    // (4x MSAA: 4 instead of 36 bytes a pixel for each waiting view).
-    bool lean = false;
+    // A poster's tile (ctx.frame_cache): memory before reuse. Every view
+    // draws into the poster's one multisampled canvas (FrameCache::
+    // recursion_canvas) and is blitted into a colour-only texture of its
+    // part's size, which waits for its parent (4x MSAA: 4 instead of 36
+    // bytes a pixel for each waiting view, and no multisampled target made
+    // per view and tile).
+    gl::OffscreenTarget* canvas = nullptr;
+    std::vector<std::string> level_names; // for ctx.pass_end, per level
 };
 
-// Node `index` into whatever is bound: the scene, the links' quads it does
-// not look through, and its children's surfaces with their textures.
-void draw_view(Frame& f, int index) {
+// Node `index`'s own view into whatever is bound: the scene and the links'
+// quads it does not look through (neither its own link's surface nor its
+// children's, which composite_child() draws).
+void draw_own(Frame& f, int index, const std::vector<int>& children) {
     const plan::ViewNode& node = f.draw.nodes[static_cast<std::size_t>(index)];
     const frustum::MatrixPair<float>& render = *f.parts[static_cast<std::size_t>(index)].render;
     DrawCounts* counts = f.stats ? &f.stats->per_level[static_cast<std::size_t>(node.level)] : nullptr;
@@ -86,28 +90,124 @@ void draw_view(Frame& f, int index) {
         quads.skip_more.push_back(through.kind == plan::ViewLink::Kind::Mirror ? through.surface_instance
                                                                           : through.exit_instance);
     }
-    const std::vector<int> children = plan::children_of(f.draw.nodes, index);
     for (int c : children) {
         quads.skip_more.push_back(f.draw.links[static_cast<std::size_t>(f.draw.nodes[static_cast<std::size_t>(c)].link)]
                                       .surface_instance);
     }
     draw_scene(f.link_ctx, quads);
-    for (int c : children) {
-        const plan::ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
-        const ViewPart& child_part = f.parts[static_cast<std::size_t>(c)];
-        if (!child_part.part) {
-            continue; // outside the window
-        }
-        const plan::ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
-        const glm::vec3 tint = link.kind == plan::ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
-        std::optional<gl::OffscreenTarget>& texture = f.textures[static_cast<std::size_t>(c)];
-        draw_reflection_surface(f.link_ctx, render, link.surface_instance, texture->color_texture(),
-                                child_part.surface_matrix, tint);
-        if (f.draw.targets && !f.lean) {
-            f.draw.targets->give_back(std::move(*texture), view_target(f.ctx, child_part));
-        }
-        texture.reset();
+}
+
+// Child `c` of node `index`: its surface with its texture (drawn) into
+// whatever is bound (node `index`'s view); then the texture goes.
+void composite_child(Frame& f, int index, int c) {
+    const plan::ViewNode& child = f.draw.nodes[static_cast<std::size_t>(c)];
+    const ViewPart& child_part = f.parts[static_cast<std::size_t>(c)];
+    const plan::ViewLink& link = f.draw.links[static_cast<std::size_t>(child.link)];
+    const glm::vec3 tint = link.kind == plan::ViewLink::Kind::Mirror ? f.draw.tint : glm::vec3(1.0f);
+    std::optional<gl::OffscreenTarget>& texture = f.textures[static_cast<std::size_t>(c)];
+    draw_reflection_surface(f.link_ctx, *f.parts[static_cast<std::size_t>(index)].render, link.surface_instance,
+                            texture->color_texture(), child_part.surface_matrix, tint);
+    if (f.draw.targets && !f.canvas) {
+        f.draw.targets->give_back(std::move(*texture), view_target(f.ctx, child_part));
     }
+    texture.reset();
+}
+
+// The children of `index` seen in the window.
+std::vector<int> seen_children(const Frame& f, int index) {
+    std::vector<int> seen;
+    for (int c : plan::children_of(f.draw.nodes, index)) {
+        if (f.parts[static_cast<std::size_t>(c)].part) {
+            seen.push_back(c);
+        }
+    }
+    return seen;
+}
+
+// The poster's canvas, made (again) when the frame's tile is larger than
+// the one it has.
+frustum::Result<gl::OffscreenTarget*> poster_canvas(const PassContext& ctx, FrameCache& cache,
+                                                   const gl::OffscreenTarget& frame) {
+    std::optional<gl::OffscreenTarget>& canvas = cache.recursion_canvas;
+    if (!canvas || canvas->width() < frame.width() || canvas->height() < frame.height()) {
+        const int width_px = std::max(frame.width(), canvas ? canvas->width() : 0);
+        const int height_px = std::max(frame.height(), canvas ? canvas->height() : 0);
+        canvas.reset(); // free the old one first
+        auto made = gl::OffscreenTarget::create(
+            ctx.fn, {width_px, height_px, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, ctx.samples});
+        if (!made) {
+            return made.take_error_in("render::draw_recursion_frame(): canvas");
+        }
+        canvas = std::move(*made);
+    }
+    return &*canvas;
+}
+
+// Node `index` drawn on f.canvas, in its bottom-left part's size, then
+// blitted into a colour-only texture of that size, returned.
+frustum::Result<gl::OffscreenTarget> draw_on_canvas(Frame& f, int index) {
+    const plan::PixelRect& part = *f.parts[static_cast<std::size_t>(index)].part;
+    const gl::Functions& fn = f.ctx.fn;
+    f.canvas->bind();
+    fn.Viewport(0, 0, part.width, part.height);
+    set_frame_state(f.ctx);
+    fn.Enable(GL_SCISSOR_TEST); // clear the part only
+    fn.Scissor(0, 0, part.width, part.height);
+    clear_frame(f.ctx);
+    fn.Disable(GL_SCISSOR_TEST);
+    const std::vector<int> children = seen_children(f, index);
+    draw_own(f, index, children);
+    for (int c : children) {
+        composite_child(f, index, c);
+    }
+    auto texture = gl::OffscreenTarget::create(
+        fn, {part.width, part.height, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
+    if (!texture) {
+        return texture.take_error();
+    }
+    if (auto blit = f.canvas->blit_color_to(*texture, part.width, part.height); !blit) {
+        return blit.take_error();
+    }
+    return texture;
+}
+
+// Node `index` (>= 1) and all it sees through its links into
+// f.textures[index]: its children first, depth first, each composited as
+// soon as its parent is drawn, so that only the textures along one path of
+// the tree wait at a time, not a whole level's.
+frustum::Status draw_into_texture(Frame& f, int index, TargetPool* pool) {
+    const plan::ViewNode& node = f.draw.nodes[static_cast<std::size_t>(index)];
+    const std::vector<int> children = seen_children(f, index);
+    for (int c : children) {
+        if (auto status = draw_into_texture(f, c, pool); !status) {
+            return status;
+        }
+    }
+    frustum::Result<gl::OffscreenTarget> target = frustum::Error{""};
+    if (f.canvas) {
+        target = draw_on_canvas(f, index);
+    } else {
+        const gl::OffscreenTargetOptions options = view_target(f.ctx, f.parts[static_cast<std::size_t>(index)]);
+        target = pool ? pool->take(f.ctx.fn, options) : gl::OffscreenTarget::create(f.ctx.fn, options);
+        if (target) {
+            target->bind(); // a kept one is not bound yet (a new one is)
+            begin_frame(f.ctx);
+            draw_own(f, index, children);
+            for (int c : children) {
+                composite_child(f, index, c);
+            }
+            target->resolve();
+        }
+    }
+    if (!target) {
+        return frustum::Error{"render::draw_recursion_frame(): level " + std::to_string(node.level) +
+                              " texture: " + target.error()};
+    }
+    f.textures[static_cast<std::size_t>(index)] = std::move(*target);
+    if (f.ctx.pass_end) {
+        f.ctx.pass_end(f.level_names[static_cast<std::size_t>(node.level)].c_str());
+    }
+    return {};
 }
 
 } // namespace
@@ -124,9 +224,16 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     Frame f{ctx,
             PassContext{ctx.fn, ctx.api, ctx.programs, draw.link_scene, ctx.depth, ctx.lighting, ctx.clear_color,
                         ctx.samples},
-            draw, stats, std::move(*parts), std::vector<std::optional<gl::OffscreenTarget>>(draw.nodes.size())};
-    f.lean = ctx.frame_cache != nullptr;
-    TargetPool* pool = f.lean ? nullptr : draw.targets;
+            draw, stats, std::move(*parts), std::vector<std::optional<gl::OffscreenTarget>>(draw.nodes.size()),
+            nullptr, {}};
+    if (ctx.frame_cache) {
+        auto canvas = poster_canvas(ctx, *ctx.frame_cache, frame);
+        if (!canvas) {
+            return canvas.take_error();
+        }
+        f.canvas = *canvas;
+    }
+    TargetPool* pool = f.canvas ? nullptr : draw.targets;
     if (stats) {
         int levels = 0;
         for (const plan::ViewNode& node : draw.nodes) {
@@ -136,7 +243,6 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
     }
     // ctx.pass_end hears "level k (n views)" as each view of level k >= 1
     // ends (level 0, the camera's view, is the caller's "main view").
-    std::vector<std::string> level_names;
     if (ctx.pass_end) {
         std::vector<int> views;
         for (const plan::ViewNode& node : draw.nodes) {
@@ -144,38 +250,24 @@ frustum::Status draw_recursion_frame(const PassContext& ctx, const gl::Offscreen
             ++views[static_cast<std::size_t>(node.level)];
         }
         for (std::size_t level = 0; level < views.size(); ++level) {
-            level_names.push_back("level " + std::to_string(level) + " (" + std::to_string(views[level]) +
-                                  (views[level] == 1 ? " view)" : " views)"));
+            f.level_names.push_back("level " + std::to_string(level) + " (" + std::to_string(views[level]) +
+                                    (views[level] == 1 ? " view)" : " views)"));
         }
     }
-    // Children come after their parents: the deepest views are drawn first.
-    for (std::size_t i = draw.nodes.size(); i-- > 1;) {
-        const plan::ViewNode& node = draw.nodes[i];
-        if (!f.parts[i].part) {
-            continue; // outside the window: nothing of it is seen there
-        }
-        const gl::OffscreenTargetOptions options = view_target(ctx, f.parts[i]);
-        auto target = pool ? pool->take(ctx.fn, options) : gl::OffscreenTarget::create(ctx.fn, options);
-        if (!target) {
-            return frustum::Error{"render::draw_recursion_frame(): level " + std::to_string(node.level) +
-                                  " texture: " + target.error()};
-        }
-        target->bind(); // a kept one is not bound yet (a new one is)
-        begin_frame(ctx);
-        draw_view(f, static_cast<int>(i));
-        if (f.lean) {
-            target->keep_resolved_only();
-        } else {
-            target->resolve();
-        }
-        f.textures[i] = std::move(*target);
-        if (ctx.pass_end) {
-            ctx.pass_end(level_names[static_cast<std::size_t>(node.level)].c_str());
-        }
-    }
+    // The camera's own view first, then each child's subtree into its
+    // texture and at once onto the frame.
     frame.bind();
     begin_frame(ctx);
-    draw_view(f, 0);
+    const std::vector<int> children = seen_children(f, 0);
+    draw_own(f, 0, children);
+    for (int c : children) {
+        if (auto status = draw_into_texture(f, c, pool); !status) {
+            return status;
+        }
+        frame.bind();
+        set_frame_state(ctx);
+        composite_child(f, 0, c);
+    }
     if (draw.targets) {
         draw.targets->end_frame();
     }

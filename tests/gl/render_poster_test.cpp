@@ -263,18 +263,42 @@ TEST_CASE("poster_layout(): the largest tile the context holds, cut to a row bud
     REQUIRE_MESSAGE(small.ok(), small.error());
     CHECK(small->tile_width_px == 640);
     CHECK(small->tile_height_px == 360);
-    // Wide frames: full-width tiles, as high as one row of tiles of at most
-    // 32 MiB and one tile of at most 4 Mpx allow.
+    // Wide frames: tiles 4096 wide (or the context's largest), as high as
+    // 36 MiB for the tile's 4x multisampled target and one row of tiles
+    // allow, in steps of 16 rows.
+    const auto budget_bytes = [](int width_px, const render::PosterLayout& l) {
+        return std::int64_t(l.tile_width_px) * l.tile_height_px * 32 + std::int64_t(width_px) * l.tile_height_px * 4;
+    };
     for (const int width_px : {4096, 16384, 32768, 65536}) {
         auto wide = render::poster_layout(fn, width_px, 65536);
         REQUIRE_MESSAGE(wide.ok(), wide.error());
+        CAPTURE(width_px);
         CHECK(wide->tile_width_px == side);
-        const std::int64_t row_bytes = std::int64_t(width_px) * wide->tile_height_px * 4;
-        CHECK(row_bytes <= (std::int64_t(32) << 20));
-        CHECK(std::int64_t(wide->tile_width_px) * wide->tile_height_px <= (std::int64_t(4) << 20));
-        // ... and no lower than the two budgets need.
-        CHECK((row_bytes * 2 > (std::int64_t(32) << 20) ||
-               std::int64_t(wide->tile_width_px) * wide->tile_height_px * 2 > (std::int64_t(4) << 20)));
+        CHECK(wide->tile_height_px % 16 == 0);
+        CHECK(budget_bytes(width_px, *wide) <= (std::int64_t(36) << 20));
+        // ... and no lower than the budget needs.
+        render::PosterLayout taller = *wide;
+        taller.tile_height_px += 16;
+        CHECK(budget_bytes(width_px, taller) > (std::int64_t(36) << 20));
+    }
+    // The tiles' memory does not grow with the frame.
+    if (side == 4096) {
+        const std::pair<int, int> expected[] = {{4096, 256}, {16384, 192}, {32768, 144}, {65536, 96}};
+        for (const auto& [width_px, tile_height_px] : expected) {
+            auto square = render::poster_layout(fn, width_px, width_px);
+            REQUIRE_MESSAGE(square.ok(), square.error());
+            CHECK(square->tile_width_px == 4096);
+            CHECK(square->tile_height_px == tile_height_px);
+        }
+        // A stereo pair's tiles are cut to one eye and made as high as the budget allows.
+        auto pair = render::stereo_poster_layout(fn, 4096, 4096);
+        REQUIRE_MESSAGE(pair.ok(), pair.error());
+        CHECK(pair->tile_width_px == 2048);
+        CHECK(pair->tile_height_px == 448);
+        auto wide_pair = render::stereo_poster_layout(fn, 32768, 32768);
+        REQUIRE_MESSAGE(wide_pair.ok(), wide_pair.error());
+        CHECK(wide_pair->tile_width_px == 4096);
+        CHECK(wide_pair->tile_height_px == 144);
     }
     auto asked = render::poster_layout(fn, 1000, 800, std::pair{300, 2000});
     REQUIRE_MESSAGE(asked.ok(), asked.error());

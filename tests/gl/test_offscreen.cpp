@@ -98,6 +98,54 @@ TEST_CASE("texture colour and 32-bit float depth targets render the same") {
                                        gl::DepthFormat::Depth32F));
 }
 
+TEST_CASE("read_rgba8_into() puts the target's rows, top to bottom, in its columns of a wider image") {
+    auto env = gl_test::make_any_environment();
+    if (!env) {
+        return;
+    }
+    const gl::Functions& fn = env->fn;
+    auto target = gl::OffscreenTarget::create(fn, {kSize, kSize});
+    REQUIRE_MESSAGE(target.ok(), target.error());
+    auto program = gl::Program::build(fn, gl_test::kVertexShader, gl_test::kFragmentShader);
+    REQUIRE_MESSAGE(program.ok(), program.error());
+    fn.ClearColor(0.1f, 0.2f, 0.6f, 1.0f);
+    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl_test::draw_triangle(fn, *program, kTopTriangle, {1.0f, 0.5f, 0.0f, 1.0f});
+    auto alone = target->read_rgba8();
+    REQUIRE_MESSAGE(alone.ok(), alone.error());
+
+    constexpr image::Rgba kUntouched{7, 8, 9, 10};
+    constexpr int kColumn = 24;
+    image::Image rows = image::make_image(kSize * 2 + 5, kSize, kUntouched);
+    auto read = target->read_rgba8_into(rows, kColumn);
+    REQUIRE_MESSAGE(read.ok(), read.error());
+    int differing = 0, touched_outside = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < rows.width; ++x) {
+            const image::Rgba got = image::pixel_at(rows, x, y);
+            if (x >= kColumn && x < kColumn + kSize) {
+                differing += !(got == image::pixel_at(*alone, x - kColumn, y));
+            } else {
+                touched_outside += !(got == kUntouched);
+            }
+        }
+    }
+    CHECK(differing == 0);
+    CHECK(touched_outside == 0);
+    // Pack state is left as read_rgba8() expects it.
+    auto again = target->read_rgba8();
+    REQUIRE(again.ok());
+    CHECK(again->rgba == alone->rgba);
+
+    image::Image narrow = image::make_image(kSize + 3, kSize, kUntouched);
+    auto off = target->read_rgba8_into(narrow, 4);
+    REQUIRE_FALSE(off.ok());
+    CHECK(off.error() ==
+          "gl::OffscreenTarget::read_rgba8_into(): a 64x64 target at column 4 does not fit a 67x64 image");
+    image::Image low = image::make_image(kSize * 2, kSize - 1, kUntouched);
+    CHECK_FALSE(target->read_rgba8_into(low, 0).ok());
+}
+
 TEST_CASE("EGL and OSMesa images agree") {
     std::optional<image::Image> pictures[2];
     for (std::size_t i = 0; i < 2; ++i) {

@@ -109,9 +109,9 @@ TEST_CASE("poster: --size above 65536, a bad --poster-tile and --stereo above on
     const std::vector<Case> cases = {
         {{"--size", "70000x10"}, "frustum-demo: error: --size must be WxH with 1..65536 each, got '70000x10'\n"},
         {{"--size", "64x48", "--poster-tile", "9000x64"},
-         "frustum-demo: error: --poster-tile must be WxH with 1..8192 each, got '9000x64'\n"},
+         "frustum-demo: error: --poster-tile must be WxH with 1..8192 each, or auto, got '9000x64'\n"},
         {{"--size", "64x48", "--poster-tile", "0x4"},
-         "frustum-demo: error: --poster-tile must be WxH with 1..8192 each, got '0x4'\n"},
+         "frustum-demo: error: --poster-tile must be WxH with 1..8192 each, or auto, got '0x4'\n"},
     };
     for (const Case& c : cases) {
         std::vector<std::string> args{"render", "--effect", "plain", "--out", out};

@@ -204,6 +204,7 @@ TEST_CASE("demo options: each option writes the value it was given") {
         const demo::Settings s = settings_of(demo::kRender, {"--size", "64x48"});
         CHECK(s.width_px == 64);
         CHECK(s.height_px == 48);
+        CHECK(!s.poster);
         CHECK(!s.poster_tile_px.has_value());
         CHECK(s.out_dir == "out");
     }
@@ -211,9 +212,15 @@ TEST_CASE("demo options: each option writes the value it was given") {
         const demo::Settings s = settings_of(demo::kRender, {"--size", "4096x2048", "--poster-tile", "32x16"});
         CHECK(s.width_px == 4096);
         CHECK(s.height_px == 2048);
+        CHECK(s.poster);
         REQUIRE(s.poster_tile_px.has_value());
         CHECK(s.poster_tile_px->first == 32);
         CHECK(s.poster_tile_px->second == 16);
+    }
+    {
+        const demo::Settings s = settings_of(demo::kRender, {"--size", "4096x2048", "--poster-tile", "auto"});
+        CHECK(s.poster);
+        CHECK(!s.poster_tile_px.has_value());
     }
     {
         const demo::Settings s = settings_of(demo::kRender, {"--depth", "minus_one_to_one", "--msaa", "2", "--out", "shots"});
