@@ -107,6 +107,15 @@ void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
     const auto& instances = ctx.scene.instances();
     const auto model_of = [&](std::size_t i) { return draw.pre_model * instances[i].world; };
 
+    // Without a culling frustum of its own (a mirror or portal view's), a
+    // draw culls by its camera's (raw planes: only signs are used), so that
+    // a poster's tile or a lens tile skips what its crop does not see.
+    std::optional<frustum::FrustumPlanes<float>> own_cull;
+    if (!draw.cull) {
+        own_cull = frustum::raw_planes(draw.camera);
+    }
+    const frustum::FrustumPlanes<float>& cull = draw.cull ? *draw.cull : *own_cull;
+
     std::vector<DrawItem> items;
     for (std::size_t i = 0; i < instances.size(); ++i) {
         if (static_cast<int>(i) == draw.skip_instance ||
@@ -114,8 +123,7 @@ void draw_scene(const PassContext& ctx, const SceneDraw& draw) {
             continue;
         }
         for (const GpuPrimitive& primitive : ctx.scene.meshes()[static_cast<std::size_t>(instances[i].mesh)]) {
-            if (draw.cull && frustum::classify(*draw.cull, world_box(model_of(i), primitive)) ==
-                                 frustum::Containment::Outside) {
+            if (frustum::classify(cull, world_box(model_of(i), primitive)) == frustum::Containment::Outside) {
                 if (draw.counts) {
                     ++draw.counts->culled;
                 }

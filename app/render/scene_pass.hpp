@@ -50,7 +50,8 @@ struct SceneDraw {
     std::vector<int> skip_more; // further instances not drawn (a recursion's link surfaces)
     // Primitives whose world bounding box (the object-space box's eight
     // corners after the model) is Outside these planes are not drawn
-    // (frustum::classify; a mirror or portal view's culling pair).
+    // (frustum::classify; a mirror or portal view's culling pair). Unset:
+    // the camera's own planes (frustum::raw_planes(camera)).
     std::optional<frustum::FrustumPlanes<float>> cull;
     // When set, counts what was drawn and culled (adds to it).
     DrawCounts* counts = nullptr;

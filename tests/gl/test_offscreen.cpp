@@ -30,20 +30,24 @@ constexpr std::array<gl_test::Vertex, 3> kTopTriangle = {{
     {0.0f, 0.9f, 0.0f, 1.0f},
 }};
 
-// A fresh kSize x kSize target cleared to kClearRgba with one triangle in
-// kTriangleRgba, read back.
+// Into the bound target: cleared to kClearRgba, one triangle in kTriangleRgba.
+void draw_cleared_triangle(const gl::Functions& fn, const std::array<gl_test::Vertex, 3>& vertices) {
+    auto program = gl::Program::build(fn, gl_test::kVertexShader, gl_test::kFragmentShader);
+    REQUIRE_MESSAGE(program.ok(), program.error());
+    fn.ClearColor(0.1f, 0.2f, 0.6f, 1.0f);
+    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl_test::draw_triangle(fn, *program, vertices, {1.0f, 0.5f, 0.0f, 1.0f});
+    REQUIRE(gl::check_error(fn, "draw_cleared_triangle()").ok());
+}
+
+// A fresh kSize x kSize target with draw_cleared_triangle(), read back.
 image::Image render_triangle(const gl::Functions& fn,
                                             const std::array<gl_test::Vertex, 3>& vertices,
                                             gl::ColorStorage color = gl::ColorStorage::Renderbuffer,
                                             gl::DepthFormat depth = gl::DepthFormat::Depth24) {
     auto target = gl::OffscreenTarget::create(fn, {kSize, kSize, color, depth});
     REQUIRE_MESSAGE(target.ok(), target.error());
-    auto program = gl::Program::build(fn, gl_test::kVertexShader, gl_test::kFragmentShader);
-    REQUIRE_MESSAGE(program.ok(), program.error());
-    fn.ClearColor(0.1f, 0.2f, 0.6f, 1.0f);
-    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl_test::draw_triangle(fn, *program, vertices, {1.0f, 0.5f, 0.0f, 1.0f});
-    REQUIRE(gl::check_error(fn, "render_triangle()").ok());
+    draw_cleared_triangle(fn, vertices);
     auto pixels = target->read_rgba8();
     REQUIRE_MESSAGE(pixels.ok(), pixels.error());
     return std::move(*pixels);
@@ -106,11 +110,7 @@ TEST_CASE("read_rgba8_into() puts the target's rows, top to bottom, in its colum
     const gl::Functions& fn = env->fn;
     auto target = gl::OffscreenTarget::create(fn, {kSize, kSize});
     REQUIRE_MESSAGE(target.ok(), target.error());
-    auto program = gl::Program::build(fn, gl_test::kVertexShader, gl_test::kFragmentShader);
-    REQUIRE_MESSAGE(program.ok(), program.error());
-    fn.ClearColor(0.1f, 0.2f, 0.6f, 1.0f);
-    fn.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl_test::draw_triangle(fn, *program, kTopTriangle, {1.0f, 0.5f, 0.0f, 1.0f});
+    draw_cleared_triangle(fn, kTopTriangle);
     auto alone = target->read_rgba8();
     REQUIRE_MESSAGE(alone.ok(), alone.error());
 
