@@ -5,16 +5,18 @@
 namespace plan {
 namespace {
 
-// The split of `count` primitives, primitive_at(i) giving the i-th placed:
-// the budget's edge from their extents, then each placed, split and
-// gathered in turn, so that neither the placed nor the split geometry is
-// ever held whole beside the gathered vertices.
-template <class PrimitiveAt>
-SplitGeometry build_split(std::size_t count, const PrimitiveAt& primitive_at, float max_edge_m) {
+// The split of `count` primitives, extent_at(i) giving the i-th's extent
+// once placed and primitive_at(i) the i-th placed: the budget's edge from
+// the extents, then each primitive placed, split and gathered in turn, so
+// that neither the placed nor the split geometry is ever held whole beside
+// the gathered vertices.
+template <class ExtentAt, class PrimitiveAt>
+SplitGeometry build_split(std::size_t count, const ExtentAt& extent_at, const PrimitiveAt& primitive_at,
+                          float max_edge_m) {
     std::vector<PrimitiveExtent> extents;
     extents.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
-        extents.push_back(extent_of(primitive_at(i)));
+        extents.push_back(extent_at(i));
     }
     SplitGeometry out;
     out.max_edge_m = edge_within_budget(extents, max_edge_m);
@@ -35,14 +37,18 @@ SplitGeometry build_split(std::size_t count, const PrimitiveAt& primitive_at, fl
 
 SplitGeometry SplitGeometry::build(const WorldGeometry& placed, float max_edge_m) {
     return build_split(
-        placed.primitives.size(), [&](std::size_t i) -> const WorldPrimitive& { return placed.primitives[i]; },
-        max_edge_m);
+        placed.primitives.size(), [&](std::size_t i) { return extent_of(placed.primitives[i]); },
+        [&](std::size_t i) -> const WorldPrimitive& { return placed.primitives[i]; }, max_edge_m);
 }
 
 SplitGeometry SplitGeometry::build(const WorldGeometry& object_space, const std::vector<scene::Instance>& instances,
                                    float max_edge_m) {
+    // The extents place only positions (into one reused buffer); the split
+    // places each primitive whole once, as it is split.
+    std::vector<glm::vec3> positions;
     return build_split(
         object_space.primitives.size(),
+        [&](std::size_t i) { return object_space.placed_extent(i, instances, positions); },
         [&](std::size_t i) { return object_space.placed_primitive(i, instances); }, max_edge_m);
 }
 

@@ -37,16 +37,27 @@ std::vector<std::uint32_t> triangle_list(const scene::Primitive& p) {
     return out;
 }
 
-float longest_edge_m(const WorldPrimitive& p) {
+// The longest edge of the triangles `indices` draws, position(v) giving vertex v's.
+template <class PositionOf>
+float longest_edge_m(const std::vector<std::uint32_t>& indices, const PositionOf& position) {
     float longest = 0.0f;
-    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         for (int e = 0; e < 3; ++e) {
-            const glm::vec3& a = p.vertices[p.indices[t + static_cast<std::size_t>(e)]].position;
-            const glm::vec3& b = p.vertices[p.indices[t + static_cast<std::size_t>((e + 1) % 3)]].position;
+            const glm::vec3& a = position(indices[t + static_cast<std::size_t>(e)]);
+            const glm::vec3& b = position(indices[t + static_cast<std::size_t>((e + 1) % 3)]);
             longest = std::max(longest, glm::length(a - b));
         }
     }
     return longest;
+}
+
+float longest_edge_m(const WorldPrimitive& p) {
+    return longest_edge_m(p.indices, [&](std::uint32_t v) -> const glm::vec3& { return p.vertices[v].position; });
+}
+
+// A position placed by `model`, as placed_primitive() and placed_extent() place it.
+glm::vec3 placed_position(const glm::mat4& model, const glm::vec3& position) {
+    return glm::vec3(model * glm::vec4(position, 1.0f));
 }
 
 // Weights are whole multiples of 1/n and every product is summed in one
@@ -110,7 +121,7 @@ WorldPrimitive WorldGeometry::placed_primitive(std::size_t i, const std::vector<
     const glm::mat4& model = instances.at(static_cast<std::size_t>(p.instance)).world;
     const glm::mat3 normals = normal_matrix(model);
     for (WorldVertex& v : p.vertices) {
-        v.position = glm::vec3(model * glm::vec4(v.position, 1.0f));
+        v.position = placed_position(model, v.position);
         v.normal = normals * v.normal;
     }
     if (glm::determinant(glm::mat3(model)) < 0.0f) { // glTF: a mirroring node reverses the winding
@@ -119,6 +130,19 @@ WorldPrimitive WorldGeometry::placed_primitive(std::size_t i, const std::vector<
         }
     }
     return p;
+}
+
+PrimitiveExtent WorldGeometry::placed_extent(std::size_t i, const std::vector<scene::Instance>& instances,
+                                             std::vector<glm::vec3>& positions) const {
+    const WorldPrimitive& p = primitives[i];
+    const glm::mat4& model = instances.at(static_cast<std::size_t>(p.instance)).world;
+    positions.clear();
+    for (const WorldVertex& v : p.vertices) {
+        positions.push_back(placed_position(model, v.position));
+    }
+    // The winding does not change an edge's length.
+    return {longest_edge_m(p.indices, [&](std::uint32_t v) -> const glm::vec3& { return positions[v]; }),
+            p.indices.size() / 3, p.vertices.size()};
 }
 
 WorldGeometry WorldGeometry::placed(const std::vector<scene::Instance>& instances) const {
@@ -167,13 +191,9 @@ PrimitiveExtent extent_of(const WorldPrimitive& primitive) {
     return {longest_edge_m(primitive), primitive.indices.size() / 3, primitive.vertices.size()};
 }
 
-std::size_t split_triangle_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m) {
-    bool any_split = false;
-    return split_count(extents, max_edge_m, any_split);
-}
-
 std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m) {
-    return split_triangle_count(extents_of(geometry), max_edge_m);
+    bool any_split = false;
+    return split_count(extents_of(geometry), max_edge_m, any_split);
 }
 
 std::size_t split_vertex_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m) {
@@ -201,43 +221,45 @@ float edge_within_budget(const WorldGeometry& geometry, float max_edge_m, std::s
     return edge_within_budget(extents_of(geometry), max_edge_m, max_triangles);
 }
 
-WorldPrimitive subdivide(const WorldPrimitive& p, float max_edge_m) {
+WorldPrimitive subdivide(WorldPrimitive p, float max_edge_m) {
     const int n = max_edge_m > 0.0f ? subdivision(longest_edge_m(p), max_edge_m) : 1;
     if (n == 1) {
         return p;
     }
-    WorldPrimitive q = p;
-    q.vertices.clear();
-    q.indices.clear();
-    const std::size_t triangles = p.indices.size() / 3;
+    // p keeps its attributes and gets the split's vertices and indices.
+    const std::vector<WorldVertex> vertices = std::move(p.vertices);
+    const std::vector<std::uint32_t> indices = std::move(p.indices);
+    p.vertices.clear(); // moved from: valid, and now empty
+    p.indices.clear();
+    const std::size_t triangles = indices.size() / 3;
     const auto side = static_cast<std::size_t>(n);
-    q.vertices.reserve(triangles * (side + 1) * (side + 2) / 2);
-    q.indices.reserve(triangles * side * side * 3);
+    p.vertices.reserve(triangles * (side + 1) * (side + 2) / 2);
+    p.indices.reserve(triangles * side * side * 3);
     // Grid point (j, k) of a triangle: weights (n - j - k, j, k) / n.
     const auto grid_index = [n](int j, int k) { return static_cast<std::uint32_t>(j * (n + 1) - j * (j - 1) / 2 + k); };
-    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-        const WorldVertex& a = p.vertices[p.indices[t]];
-        const WorldVertex& b = p.vertices[p.indices[t + 1]];
-        const WorldVertex& c = p.vertices[p.indices[t + 2]];
-        const auto base = static_cast<std::uint32_t>(q.vertices.size());
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const WorldVertex& a = vertices[indices[t]];
+        const WorldVertex& b = vertices[indices[t + 1]];
+        const WorldVertex& c = vertices[indices[t + 2]];
+        const auto base = static_cast<std::uint32_t>(p.vertices.size());
         for (int j = 0; j <= n; ++j) {
             for (int k = 0; k <= n - j; ++k) {
-                q.vertices.push_back(blend(a, b, c, n - j - k, j, k, n));
+                p.vertices.push_back(blend(a, b, c, n - j - k, j, k, n));
             }
         }
         for (int j = 0; j < n; ++j) {
             for (int k = 0; k < n - j; ++k) {
                 // Same orientation as (a, b, c): steps in j go towards b, in k towards c.
-                q.indices.insert(q.indices.end(),
+                p.indices.insert(p.indices.end(),
                                  {base + grid_index(j, k), base + grid_index(j + 1, k), base + grid_index(j, k + 1)});
                 if (k + 1 < n - j) {
-                    q.indices.insert(q.indices.end(), {base + grid_index(j + 1, k), base + grid_index(j + 1, k + 1),
+                    p.indices.insert(p.indices.end(), {base + grid_index(j + 1, k), base + grid_index(j + 1, k + 1),
                                                        base + grid_index(j, k + 1)});
                 }
             }
         }
     }
-    return q;
+    return p;
 }
 
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m) {

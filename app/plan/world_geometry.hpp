@@ -34,6 +34,14 @@ struct WorldPrimitive {
     bool textured = false;
 };
 
+// What the split's budget needs of one primitive: subdivide() splits it by
+// its longest edge, into n x n triangles of (n + 1)(n + 2) / 2 vertices each.
+struct PrimitiveExtent {
+    float longest_edge_m = 0.0f;
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+};
+
 struct WorldGeometry {
     std::vector<WorldPrimitive> primitives;
 
@@ -50,6 +58,11 @@ struct WorldGeometry {
     WorldGeometry placed(const std::vector<scene::Instance>& instances) const;
     // primitives[i] of it alone (a split built a primitive at a time).
     WorldPrimitive placed_primitive(std::size_t i, const std::vector<scene::Instance>& instances) const;
+    // extent_of(placed_primitive(i, instances)) without placing the whole
+    // primitive: only its positions, into `positions` (kept by the caller
+    // for the next primitive, so that a scene's extents allocate once).
+    PrimitiveExtent placed_extent(std::size_t i, const std::vector<scene::Instance>& instances,
+                                  std::vector<glm::vec3>& positions) const;
 };
 
 // Each primitive's triangles split into n x n smaller ones (a uniform
@@ -58,8 +71,9 @@ struct WorldGeometry {
 // edges split alike, so the surface stays watertight. max_edge_m <= 0: a copy.
 inline constexpr int kMaxSubdivision = 64;
 WorldGeometry subdivide(const WorldGeometry& geometry, float max_edge_m);
-// One primitive of it, split as subdivide() splits it there.
-WorldPrimitive subdivide(const WorldPrimitive& primitive, float max_edge_m);
+// One primitive of it, split as subdivide() splits it there (an unsplit
+// one, n = 1, is returned as given: moved in, moved out).
+WorldPrimitive subdivide(WorldPrimitive primitive, float max_edge_m);
 
 // The most triangles a split may hold (SplitGeometry): 2^20, about 150 MB
 // for the gathered vertices and as much for the GPU's copy (48-byte
@@ -69,19 +83,11 @@ WorldPrimitive subdivide(const WorldPrimitive& primitive, float max_edge_m);
 // triangles became 1.6e9 (24 GB) at the 0.25 m default edge.
 inline constexpr std::size_t kMaxSplitTriangles = std::size_t(1) << 20;
 
-// What the split's budget needs of one primitive: subdivide() splits it by
-// its longest edge, into n x n triangles of (n + 1)(n + 2) / 2 vertices each.
-struct PrimitiveExtent {
-    float longest_edge_m = 0.0f;
-    std::size_t triangles = 0;
-    std::size_t vertices = 0;
-};
 PrimitiveExtent extent_of(const WorldPrimitive& primitive);
 
 // The triangles and the vertices subdivide(geometry, max_edge_m) gives, from
 // the geometry or from its primitives' extents.
 std::size_t split_triangle_count(const WorldGeometry& geometry, float max_edge_m);
-std::size_t split_triangle_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m);
 std::size_t split_vertex_count(const std::vector<PrimitiveExtent>& extents, float max_edge_m);
 
 // max_edge_m, doubled until subdivide() gives at most max_triangles

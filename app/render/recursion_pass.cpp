@@ -113,6 +113,15 @@ void composite_child(Frame& f, int index, int c) {
     texture.reset();
 }
 
+// Node `index`'s whole view into whatever is bound: its own, then each
+// child's surface with the child's texture.
+void draw_view(Frame& f, int index, const std::vector<int>& children) {
+    draw_own(f, index, children);
+    for (int c : children) {
+        composite_child(f, index, c);
+    }
+}
+
 // The children of `index` seen in the window.
 std::vector<int> seen_children(const Frame& f, int index) {
     std::vector<int> seen;
@@ -145,7 +154,7 @@ frustum::Result<gl::OffscreenTarget*> poster_canvas(const PassContext& ctx, Fram
 
 // Node `index` drawn on f.canvas, in its bottom-left part's size, then
 // blitted into a colour-only texture of that size, returned.
-frustum::Result<gl::OffscreenTarget> draw_on_canvas(Frame& f, int index) {
+frustum::Result<gl::OffscreenTarget> draw_on_canvas(Frame& f, int index, const std::vector<int>& children) {
     const plan::PixelRect& part = *f.parts[static_cast<std::size_t>(index)].part;
     const gl::Functions& fn = f.ctx.fn;
     f.canvas->bind();
@@ -155,11 +164,7 @@ frustum::Result<gl::OffscreenTarget> draw_on_canvas(Frame& f, int index) {
     fn.Scissor(0, 0, part.width, part.height);
     clear_frame(f.ctx);
     fn.Disable(GL_SCISSOR_TEST);
-    const std::vector<int> children = seen_children(f, index);
-    draw_own(f, index, children);
-    for (int c : children) {
-        composite_child(f, index, c);
-    }
+    draw_view(f, index, children);
     auto texture = gl::OffscreenTarget::create(
         fn, {part.width, part.height, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
     if (!texture) {
@@ -185,17 +190,14 @@ frustum::Status draw_into_texture(Frame& f, int index, TargetPool* pool) {
     }
     frustum::Result<gl::OffscreenTarget> target = frustum::Error{""};
     if (f.canvas) {
-        target = draw_on_canvas(f, index);
+        target = draw_on_canvas(f, index, children);
     } else {
         const gl::OffscreenTargetOptions options = view_target(f.ctx, f.parts[static_cast<std::size_t>(index)]);
         target = pool ? pool->take(f.ctx.fn, options) : gl::OffscreenTarget::create(f.ctx.fn, options);
         if (target) {
             target->bind(); // a kept one is not bound yet (a new one is)
             begin_frame(f.ctx);
-            draw_own(f, index, children);
-            for (int c : children) {
-                composite_child(f, index, c);
-            }
+            draw_view(f, index, children);
             target->resolve();
         }
     }

@@ -8,7 +8,10 @@
 #include <plan/split_geometry.hpp>
 #include <plan/world_geometry.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cstddef>
+#include <vector>
 
 namespace {
 
@@ -73,6 +76,39 @@ TEST_CASE("a long primitive's split grows the edge until it fits the budget, and
     CHECK(plan::split_triangle_count(world, unsplit_m) == 20000);
     // No split asked for: none.
     CHECK(plan::edge_within_budget(world, 0.0f) == 0.0f);
+}
+
+TEST_CASE("a split built from object space and the instances equals the split of the placed geometry") {
+    // Two instances of one grid: one scaled 30x (its edges split), one
+    // mirrored (its winding reversed), as a moved mirror rebuilds the split.
+    plan::WorldGeometry object_space;
+    for (int instance : {0, 1}) {
+        plan::WorldPrimitive p = grid(4, 1.0f);
+        p.instance = instance;
+        p.material = 3 + instance;
+        object_space.primitives.push_back(p);
+    }
+    std::vector<scene::Instance> instances(2);
+    instances[0].world = glm::scale(glm::mat4(1.0f), glm::vec3(30.0f, 1.0f, 30.0f));
+    instances[1].world = glm::translate(glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), glm::vec3(2, 0, 0));
+    const auto direct = plan::SplitGeometry::build(object_space.placed(instances), 0.25f);
+    const auto streamed = plan::SplitGeometry::build(object_space, instances, 0.25f);
+    CHECK(streamed.max_edge_m == direct.max_edge_m);
+    CHECK(streamed.bases == direct.bases);
+    REQUIRE(streamed.vertices.size() == direct.vertices.size());
+    CHECK(streamed.vertices.size() > object_space.primitives[0].vertices.size() * 2); // instance 0 was split
+    bool same_vertices = true;
+    for (std::size_t v = 0; v < direct.vertices.size(); ++v) {
+        same_vertices = same_vertices && streamed.vertices[v].position == direct.vertices[v].position &&
+                        streamed.vertices[v].normal == direct.vertices[v].normal;
+    }
+    CHECK(same_vertices);
+    REQUIRE(streamed.split.primitives.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(streamed.split.primitives[i].indices == direct.split.primitives[i].indices);
+        CHECK(streamed.split.primitives[i].material == object_space.primitives[i].material);
+        CHECK(streamed.split.primitives[i].instance == object_space.primitives[i].instance);
+    }
 }
 
 } // TEST_SUITE
