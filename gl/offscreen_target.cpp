@@ -204,20 +204,37 @@ void OffscreenTarget::resolve() const {
     blit_color(resolve_framebuffer_, width_, height_);
 }
 
-frustum::Status OffscreenTarget::blit_color_to(const OffscreenTarget& to, int width_px, int height_px) const {
+frustum::Status OffscreenTarget::blit_color_to(const OffscreenTarget& to, int width_px, int height_px, int to_x_px,
+                                              int to_y_px) const {
     constexpr const char* kBlit = "gl::OffscreenTarget::blit_color_to()";
     if (to.samples_ != 1) {
         return frustum::Error{std::string(kBlit) + ": the target blitted into must have 1 sample, got " +
                               std::to_string(to.samples_)};
     }
-    if (width_px < 1 || height_px < 1 || width_px > std::min(width_, to.width_) ||
-        height_px > std::min(height_, to.height_)) {
-        return frustum::Error{std::string(kBlit) + ": " + size_text(width_px, height_px) + " pixels must fit both the " +
+    if (width_px < 1 || height_px < 1 || to_x_px < 0 || to_y_px < 0 || width_px > width_ || height_px > height_ ||
+        width_px > to.width_ - to_x_px || height_px > to.height_ - to_y_px) {
+        return frustum::Error{std::string(kBlit) + ": " + size_text(width_px, height_px) + " pixels at (" +
+                              std::to_string(to_x_px) + ", " + std::to_string(to_y_px) + ") must fit both the " +
                               size_text(width_, height_) + " target and the " + size_text(to.width_, to.height_) +
                               " one"};
     }
-    blit_color(to.framebuffer_, width_px, height_px);
-    return check_error(*fn_, "gl::OffscreenTarget::blit_color_to()");
+    if (to_x_px == 0 && to_y_px == 0) {
+        blit_color(to.framebuffer_, width_px, height_px);
+    } else {
+        // A multisampled blit keeps its rectangle (GLES 3.0 §4.3.3): resolve
+        // in place first, then move the single-sample pixels.
+        if (samples_ > 1) {
+            blit_color(resolve_framebuffer_, width_px, height_px);
+        }
+        fn_->BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer().id());
+        fn_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+        fn_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to.framebuffer_.id());
+        fn_->Disable(GL_SCISSOR_TEST);
+        fn_->BlitFramebuffer(0, 0, width_px, height_px, to_x_px, to_y_px, to_x_px + width_px, to_y_px + height_px,
+                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        bind();
+    }
+    return check_error(*fn_, kBlit);
 }
 
 void OffscreenTarget::blit_color(const Framebuffer& to, int width_px, int height_px) const {

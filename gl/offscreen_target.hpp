@@ -55,13 +55,15 @@ public:
     void resolve() const;
 
     // Blits the bottom-left width_px x height_px of what was drawn here
-    // (multisampled: resolved on the way) into the bottom-left of `to`, a
-    // single-sample target, and binds this one again: one multisampled
-    // target drawn a part at a time can fill several smaller textures.
-    // Leaves the scissor test off. Errors: a `to` with samples, a size
-    // larger than either target, e.g.
-    // "gl::OffscreenTarget::blit_color_to(): 600x20 pixels must fit both the 512x256 target and the 600x20 one".
-    frustum::Status blit_color_to(const OffscreenTarget& to, int width_px, int height_px) const;
+    // (multisampled: resolved on the way) into `to`, a single-sample target,
+    // with its corner at (to_x_px, to_y_px) from the bottom-left, and binds
+    // this one again: one multisampled target drawn a part at a time can
+    // fill several smaller textures, or one larger texture a part at a
+    // time. Leaves the scissor test off. Errors: a `to` with samples, a
+    // part that does not fit this target or `to` there, e.g.
+    // "gl::OffscreenTarget::blit_color_to(): 600x20 pixels at (0, 0) must fit both the 512x256 target and the 600x20 one".
+    frustum::Status blit_color_to(const OffscreenTarget& to, int width_px, int height_px, int to_x_px = 0,
+                                  int to_y_px = 0) const;
 
     // After drawing: resolves, then frees what only drawing needs (the
     // multisampled colour, the depth buffer and the drawing framebuffer),
@@ -95,6 +97,7 @@ public:
 
 private:
     OffscreenTarget() = default;
+    // The bottom-left width_px x height_px into `to` at the same place.
     void blit_color(const Framebuffer& to, int width_px, int height_px) const;
 
     const Functions* fn_ = nullptr;

@@ -7,7 +7,7 @@
 layout(location = 0) in vec3 a_position; // world space
 
 uniform mat4 u_view_projection; // the camera, in the context's depth range
-uniform mat4 u_patch_matrix;    // the patch frustum its atlas tile was rendered with
+uniform mat4 u_patch_matrix;    // the patch frustum its view was rendered with
 
 out vec4 v_patch_clip;
 

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,38 +22,50 @@ namespace render {
 namespace {
 
 constexpr const char* kDraw = "render::draw_curved_mirror_frame(): ";
-constexpr int kMaxAtlasSidePx = 4096; // see mirror_geometry.cpp
+constexpr int kMaxViewsSidePx = 4096; // G tiles side by side at most; see mirror_geometry.cpp
 constexpr int kMinTilePx = 4;
 constexpr int kMinCapQuads = 32; // the cap mesh has at least this many quads per side
 
-// The cap as one indexed triangle mesh, M x M quads (M = G * quads per
-// patch), its indices grouped by patch: patch (i, j) draws
-// `indices_per_patch` indices from (j G + i) indices_per_patch.
+// The cap's vertices, (M + 1) x (M + 1) world positions, M = G x quads per
+// patch: what the mesh draws and what a patch's screen box bounds.
+struct CapPoints {
+    int per_patch = 0; // quads per patch side
+    int m = 0;         // quads per cap side
+    std::vector<glm::vec3> positions;
+    const glm::vec3& at(int x, int y) const { return positions[static_cast<std::size_t>(y * (m + 1) + x)]; }
+};
+
+CapPoints cap_points(const plan::CurvedMirror& mirror, int grid) {
+    CapPoints cap;
+    cap.per_patch = (kMinCapQuads + grid - 1) / grid;
+    cap.m = grid * cap.per_patch;
+    cap.positions.reserve(static_cast<std::size_t>((cap.m + 1) * (cap.m + 1)));
+    for (int y = 0; y <= cap.m; ++y) {
+        for (int x = 0; x <= cap.m; ++x) {
+            cap.positions.emplace_back(mirror.at(static_cast<double>(x) / cap.m, static_cast<double>(y) / cap.m).position);
+        }
+    }
+    return cap;
+}
+
+// The cap as one indexed triangle mesh, M x M quads, its indices grouped
+// by patch and, in a patch, by quad as cap_quads() lists them: quad q of
+// patch k = j G + i is the 6 indices from (k per_patch^2 + q) 6.
 struct CapMesh {
     gl::VertexArray vertex_array;
     gl::Buffer vertex_buffer, index_buffer;
-    GLsizei indices_per_patch = 0;
 };
 
-frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const plan::CurvedMirror& mirror, int grid) {
-    const int per_patch = (kMinCapQuads + grid - 1) / grid;
-    const int m = grid * per_patch;
-    std::vector<float> positions;
-    positions.reserve(static_cast<std::size_t>((m + 1) * (m + 1) * 3));
-    for (int y = 0; y <= m; ++y) {
-        for (int x = 0; x <= m; ++x) {
-            const glm::dvec3 p = mirror.at(static_cast<double>(x) / m, static_cast<double>(y) / m).position;
-            positions.insert(positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
-        }
-    }
+frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CapPoints& cap, int grid) {
+    const int m = cap.m;
     // Counter-clockwise seen from the reflecting side (a1 right, a2 up).
     std::vector<std::uint32_t> indices;
     indices.reserve(static_cast<std::size_t>(m * m * 6));
     const auto vertex = [m](int x, int y) { return static_cast<std::uint32_t>(y * (m + 1) + x); };
     for (int j = 0; j < grid; ++j) {
         for (int i = 0; i < grid; ++i) {
-            for (int y = j * per_patch; y < (j + 1) * per_patch; ++y) {
-                for (int x = i * per_patch; x < (i + 1) * per_patch; ++x) {
+            for (int y = j * cap.per_patch; y < (j + 1) * cap.per_patch; ++y) {
+                for (int x = i * cap.per_patch; x < (i + 1) * cap.per_patch; ++x) {
                     indices.insert(indices.end(), {vertex(x, y), vertex(x + 1, y), vertex(x + 1, y + 1),
                                                    vertex(x, y), vertex(x + 1, y + 1), vertex(x, y + 1)});
                 }
@@ -70,13 +84,12 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const plan::CurvedM
     mesh.vertex_array = std::move(*vertex_array);
     mesh.vertex_buffer = std::move(*vertex_buffer);
     mesh.index_buffer = std::move(*index_buffer);
-    mesh.indices_per_patch = static_cast<GLsizei>(per_patch * per_patch * 6);
     fn.BindVertexArray(mesh.vertex_array.id());
     fn.BindBuffer(GL_ARRAY_BUFFER, mesh.vertex_buffer.id());
-    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size() * sizeof(float)), positions.data(),
-                  GL_STATIC_DRAW);
+    fn.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cap.positions.size() * sizeof(glm::vec3)),
+                  cap.positions.data(), GL_STATIC_DRAW);
     fn.EnableVertexAttribArray(kPositionLocation);
-    fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    fn.VertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     fn.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.index_buffer.id());
     fn.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                   indices.data(), GL_STATIC_DRAW);
@@ -85,70 +98,219 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const plan::CurvedM
     return mesh;
 }
 
-// Renders every patch's view into its tile: tile (i, j) is the rectangle
-// (i w, j h, w, h) of the atlas, from the bottom-left. The atlas is single-
-// sampled colour only; each patch is drawn into one tile-sized target
-// sampled like the frame, resolved there and copied into its tile (a
-// resolve blit keeps its rectangle; the copy moves it). So the atlas's
-// multisampled colour and depth (4x MSAA at 4096 x 4096: 512 MiB) are never
-// alive at once, only one tile's; the pixels are the same.
-frustum::Result<gl::OffscreenTarget> render_atlas(const PassContext& ctx, const plan::CurvedPlan& plan,
-                                                  const glm::ivec2& tile, int mirror_instance) {
-    auto atlas = gl::OffscreenTarget::create(
-        ctx.fn, {plan.grid * tile.x, plan.grid * tile.y, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
-    auto scratch = gl::OffscreenTarget::create(
-        ctx.fn, {tile.x, tile.y, gl::ColorStorage::Renderbuffer, gl::DepthFormat::Depth24, ctx.samples});
-    if (!atlas || !scratch) {
-        return frustum::Error{kDraw + std::string("atlas: ") + (!atlas ? atlas.error() : scratch.error())};
-    }
-    const gl::Functions& fn = ctx.fn;
-    for (const plan::PatchFrustum& patch : plan.patches) {
-        scratch->bind();
-        set_frame_state(ctx);
-        clear_frame(ctx);
-        if (patch.pair) {
-            SceneDraw draw(*patch.pair);
-            draw.skip_instance = mirror_instance;
-            draw_scene(ctx, draw);
-        }
-        scratch->resolve();
-        fn.BindFramebuffer(GL_READ_FRAMEBUFFER, scratch->resolved_framebuffer().id());
-        fn.ReadBuffer(GL_COLOR_ATTACHMENT0);
-        fn.BindFramebuffer(GL_DRAW_FRAMEBUFFER, atlas->framebuffer().id());
-        fn.BlitFramebuffer(0, 0, tile.x, tile.y, patch.i * tile.x, patch.j * tile.y, (patch.i + 1) * tile.x,
-                           (patch.j + 1) * tile.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    }
-    fn.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    return atlas;
+// Texel rows per strip of a patch's view (CurvedViews): as many as the
+// frame's target holds with the two margin rows, so that a strip is one
+// scene draw (a direct render's target, as tall as the frame, holds a
+// whole view: one strip per patch), and at least this many.
+constexpr int kMinStripRows = 16;
+
+// Rounded out by a pixel (or texel): floor(lo) - 1 .. ceil(hi) + 1, clamped to [0, size].
+glm::ivec2 rounded_out(float lo, float hi, int size) {
+    const float low = std::clamp(std::floor(lo) - 1.0f, 0.0f, static_cast<float>(size));
+    const float high = std::clamp(std::ceil(hi) + 1.0f, 0.0f, static_cast<float>(size));
+    return {static_cast<int>(low), static_cast<int>(high)};
 }
 
-// on_frame: the camera cropped to the target's window.
+// The cap mesh's quads, per patch: the frame pixels each can reach (its
+// vertices projected with the whole frame's camera) and the view rows its
+// lookups can read (its vertices projected with the patch's matrix). A
+// flat triangle's fragments, and their lookups, lie in the box of its
+// vertices' projections when all three are in front of the eye (w > 0; the
+// near plane only clips more away); a quad with a vertex at or behind
+// either eye may reach any pixel or read any row.
+std::vector<std::vector<CurvedViews::Quad>> cap_quads(const CapPoints& cap, const plan::CurvedPlan& plan,
+                                                      const glm::mat4& camera, int width_px, int height_px,
+                                                      const glm::ivec2& tile) {
+    const glm::vec2 size(static_cast<float>(width_px), static_cast<float>(height_px));
+    std::vector<std::vector<CurvedViews::Quad>> quads(plan.patches.size());
+    for (const plan::PatchFrustum& patch : plan.patches) {
+        std::vector<CurvedViews::Quad>& out = quads[static_cast<std::size_t>(patch.j * plan.grid + patch.i)];
+        const glm::mat4 lookup = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
+        for (int y = patch.j * cap.per_patch; y < (patch.j + 1) * cap.per_patch; ++y) {
+            for (int x = patch.i * cap.per_patch; x < (patch.i + 1) * cap.per_patch; ++x) {
+                glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+                float row_lo = std::numeric_limits<float>::max(), row_hi = std::numeric_limits<float>::lowest();
+                bool on_screen = true, in_view = true;
+                for (const glm::ivec2 corner : {glm::ivec2(x, y), glm::ivec2(x + 1, y), glm::ivec2(x, y + 1),
+                                                glm::ivec2(x + 1, y + 1)}) {
+                    const glm::vec4 p(cap.at(corner.x, corner.y), 1.0f);
+                    const glm::vec4 clip = camera * p;
+                    if (clip.w > 0.0f) {
+                        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size;
+                        lo = glm::min(lo, px);
+                        hi = glm::max(hi, px);
+                    } else {
+                        on_screen = false;
+                    }
+                    const glm::vec4 view = lookup * p;
+                    if (view.w > 0.0f) {
+                        const float row = (view.y / view.w * 0.5f + 0.5f) * static_cast<float>(tile.y);
+                        row_lo = std::min(row_lo, row);
+                        row_hi = std::max(row_hi, row);
+                    } else {
+                        in_view = false;
+                    }
+                }
+                CurvedViews::Quad quad;
+                quad.screen = plan::PixelRect{0, 0, width_px, height_px};
+                if (on_screen) {
+                    const glm::ivec2 xs = rounded_out(lo.x, hi.x, width_px);
+                    const glm::ivec2 ys = rounded_out(lo.y, hi.y, height_px);
+                    quad.screen = plan::PixelRect{xs.x, ys.x, xs.y - xs.x, ys.y - ys.x};
+                }
+                quad.first_row = 0;
+                quad.last_row = tile.y - 1;
+                if (in_view) { // the lookup is clamped into the view: rows outside read its edge
+                    const glm::ivec2 rows = rounded_out(row_lo, row_hi, tile.y - 1);
+                    quad.first_row = rows.x;
+                    quad.last_row = rows.y;
+                }
+                out.push_back(quad);
+            }
+        }
+    }
+    return quads;
+}
+
+// The strips of one patch whose rows the quads seen in `rect` read: first
+// and last (inclusive), or none when no quad is seen there.
+std::optional<glm::ivec2> strips_read(const CurvedViews& views, std::size_t patch, const plan::PixelRect& rect) {
+    std::optional<glm::ivec2> rows;
+    for (const CurvedViews::Quad& quad : views.quads[patch]) {
+        if (intersect(quad.screen, rect)) {
+            rows = rows ? glm::ivec2(std::min(rows->x, quad.first_row), std::max(rows->y, quad.last_row))
+                        : glm::ivec2(quad.first_row, quad.last_row);
+        }
+    }
+    if (!rows) {
+        return std::nullopt;
+    }
+    return *rows / views.strip_rows;
+}
+
+// View rows [first, end) of strip s, and those of its texture (a row of
+// margin each side, inside the view).
+struct StripRows {
+    int first = 0, end = 0;
+    int texture_first = 0, texture_end = 0;
+};
+
+StripRows strip_rows(const CurvedViews& views, int s) {
+    StripRows r;
+    r.first = s * views.strip_rows;
+    r.end = std::min(views.tile.y, r.first + views.strip_rows);
+    r.texture_first = std::max(0, r.first - 1);
+    r.texture_end = std::min(views.tile.y, r.end + 1);
+    return r;
+}
+
+// One strip of a patch's view (an ordinary view from the patch origin,
+// without the cap's own mirror) into a colour-only texture. Drawn on
+// `canvas` (the frame's own target, multisampled like the frame, before the
+// frame is drawn there) in parts of at most its size, each the crop of the
+// patch's pair to its part of the view (§5.1), resolved and blitted into
+// place: no multisampled target of its own, whatever the view's size. A
+// patch without a frustum: the clear colour.
+frustum::Result<gl::OffscreenTarget> render_strip(const PassContext& ctx, const gl::OffscreenTarget& canvas,
+                                                  const plan::PatchFrustum& patch, const CurvedViews& views, int s,
+                                                  int mirror_instance) {
+    const StripRows rows = strip_rows(views, s);
+    const int height_px = rows.texture_end - rows.texture_first;
+    auto strip = gl::OffscreenTarget::create(
+        ctx.fn, {views.tile.x, height_px, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
+    if (!strip) {
+        return frustum::Error{kDraw + std::string("patch view: ") + strip.error()};
+    }
+    const gl::Functions& fn = ctx.fn;
+    const plan::PixelRect image{0, 0, views.tile.x, views.tile.y};
+    for (int y = 0; y < height_px; y += canvas.height()) {
+        for (int x = 0; x < views.tile.x; x += canvas.width()) {
+            const plan::PixelRect part{x, rows.texture_first + y, std::min(canvas.width(), views.tile.x - x),
+                                       std::min(canvas.height(), height_px - y)};
+            canvas.bind();
+            fn.Viewport(0, 0, part.width, part.height);
+            set_frame_state(ctx);
+            fn.Enable(GL_SCISSOR_TEST); // clear the part only
+            fn.Scissor(0, 0, part.width, part.height);
+            clear_frame(ctx);
+            fn.Disable(GL_SCISSOR_TEST);
+            if (patch.pair) {
+                auto cropped = crop_part(*patch.pair, image, part);
+                if (!cropped) {
+                    return cropped.take_error_in("render::draw_curved_mirror_frame(): patch view");
+                }
+                SceneDraw draw(*cropped);
+                draw.skip_instance = mirror_instance;
+                draw_scene(ctx, draw);
+            }
+            if (auto blit = canvas.blit_color_to(*strip, part.width, part.height, x, y); !blit) {
+                return blit.take_error_in("render::draw_curved_mirror_frame(): patch view");
+            }
+        }
+    }
+    return strip;
+}
+
+// on_frame: the camera cropped to the target's window. Each patch seen in
+// the window is drawn once per strip its quads there read (every one of
+// them is made), each time only the quads seen in the window that read the
+// strip, in runs of consecutive quads; a fragment is kept by the strip
+// that holds its lookup's row (a quad across two strips is drawn by both,
+// each keeping its own fragments), so nearly every fragment is shaded once.
 void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::MatrixPair<float>& on_frame,
-              const plan::CurvedPlan& plan, const CapMesh& mesh, const gl::OffscreenTarget& atlas,
-              const glm::ivec2& tile) {
+              const plan::CurvedPlan& plan, const CapMesh& mesh, const CurvedViews& views,
+              const plan::PixelRect& window) {
     const gl::Functions& fn = ctx.fn;
     const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
     p.use();
     p.set_view_projection(ctx.depth.to_gpu(on_frame).matrix());
     p.set_tint(draw.tint);
-    const glm::vec2 atlas_size(static_cast<float>(atlas.width()), static_cast<float>(atlas.height()));
-    p.set_half_texel(glm::vec2(0.5f / atlas_size.x, 0.5f / atlas_size.y));
+    p.set_half_texel(glm::vec2(0.5f / static_cast<float>(views.tile.x), 0.5f / static_cast<float>(views.tile.y)));
+    p.set_view_rows(static_cast<float>(views.tile.y));
     fn.ActiveTexture(GL_TEXTURE0);
-    fn.BindTexture(GL_TEXTURE_2D, atlas.color_texture().id());
-    p.set_atlas_texture_unit(0);
+    p.set_view_texture_unit(0);
     fn.BindVertexArray(mesh.vertex_array.id());
     // The cap is single-sided: from behind it is culled like any surface.
     set_face_state(fn, false, draw.camera.flips_winding(), false);
-    const glm::vec2 tile_uv = glm::vec2(tile) / atlas_size;
     for (const plan::PatchFrustum& patch : plan.patches) {
-        // Without a frustum any matrix will do: the lookup stays inside the
-        // tile, which holds only the clear colour.
-        const glm::mat4 matrix = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
-        p.set_patch_matrix(matrix);
-        p.set_tile(glm::vec4(patch.i * tile_uv.x, patch.j * tile_uv.y, tile_uv.x, tile_uv.y));
-        const auto first = static_cast<std::size_t>(patch.j * plan.grid + patch.i) *
-                           static_cast<std::size_t>(mesh.indices_per_patch) * sizeof(std::uint32_t);
-        fn.DrawElements(GL_TRIANGLES, mesh.indices_per_patch, GL_UNSIGNED_INT, reinterpret_cast<const void*>(first));
+        const auto k = static_cast<std::size_t>(patch.j * plan.grid + patch.i);
+        const std::optional<glm::ivec2> read = strips_read(views, k, window);
+        if (!read) {
+            continue;
+        }
+        // Without a frustum any matrix will do: the view holds only the clear colour.
+        p.set_patch_matrix(patch.pair ? patch.pair->matrix() : glm::mat4(1.0f));
+        const std::vector<CurvedViews::Quad>& quads = views.quads[k];
+        for (int s = read->x; s <= read->y; ++s) {
+            const StripRows rows = strip_rows(views, s);
+            const auto drawn = [&](std::size_t q) {
+                return quads[q].first_row < rows.end && quads[q].last_row >= rows.first &&
+                       intersect(quads[q].screen, window).has_value();
+            };
+            fn.BindTexture(GL_TEXTURE_2D,
+                           views.strips[k * static_cast<std::size_t>(views.strips_per_patch) +
+                                        static_cast<std::size_t>(s)]
+                               ->color_texture()
+                               .id());
+            p.set_strip(glm::vec4(static_cast<float>(rows.first), static_cast<float>(rows.end),
+                                  static_cast<float>(rows.texture_first),
+                                  static_cast<float>(rows.texture_end - rows.texture_first)));
+            // Quad q of patch k: 6 indices from (k quads per patch + q) 6, as upload_cap() orders them.
+            for (std::size_t q = 0; q < quads.size();) {
+                if (!drawn(q)) {
+                    ++q;
+                    continue;
+                }
+                std::size_t end = q + 1;
+                while (end < quads.size() && drawn(end)) {
+                    ++end;
+                }
+                const std::size_t first = (k * quads.size() + q) * 6 * sizeof(std::uint32_t);
+                fn.DrawElements(GL_TRIANGLES, static_cast<GLsizei>((end - q) * 6), GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(first));
+                q = end;
+            }
+        }
     }
     fn.BindVertexArray(0);
     fn.BindTexture(GL_TEXTURE_2D, 0);
@@ -159,7 +321,7 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
 
 glm::ivec2 curved_tile_size(const plan::CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,
                             int width_px, int height_px) {
-    const int largest = std::max(kMinTilePx, kMaxAtlasSidePx / grid);
+    const int largest = std::max(kMinTilePx, kMaxViewsSidePx / grid);
     const float sign = frustum::clip_z_span<float>(camera.depth()) > 0.0f ? 1.0f : -1.0f;
     const float z_near = frustum::clip_z_near<float>(camera.depth());
     // Pixels of the (grid + 1)^2 patch corners; a corner behind the near
@@ -193,7 +355,7 @@ glm::ivec2 curved_tile_size(const plan::CurvedMirror& mirror, const frustum::Mat
 
 frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::OffscreenTarget& frame,
                                          const CurvedDraw& draw) {
-    // Planned for the whole frame (the atlas's tile size too); the target
+    // Planned for the whole frame (the patches' views too); the target
     // draws its window's crop.
     const FrameWindow window = window_of(ctx, frame.width(), frame.height());
     auto on_frame = crop_to_window(draw.camera, window);
@@ -221,20 +383,47 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     if (!plan->has_value()) {
         return plain();
     }
-    const glm::ivec2 tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
-                                              window.full_height_px);
-    // One atlas per frame: the tiles of a poster share it (frame_cache.hpp).
-    std::optional<gl::OffscreenTarget> own_atlas;
-    std::optional<gl::OffscreenTarget>& atlas_slot = ctx.frame_cache ? ctx.frame_cache->curved_atlas : own_atlas;
-    if (!atlas_slot) {
-        auto made = render_atlas(ctx, **plan, tile, draw.mirror.instance);
-        if (!made) {
-            return made.take_error();
-        }
-        atlas_slot = std::move(*made);
+    // The patches' views are the frame's (a poster's tiles share them,
+    // frame_cache.hpp). A strip is made when a target first reads it and
+    // let go when a target's rows of the frame do not read it any more: a
+    // poster drawn a row of tiles at a time keeps the strips its current
+    // row reads, each drawn once when the rows read go one way.
+    std::unique_ptr<CurvedViews> own_views;
+    std::unique_ptr<CurvedViews>& views_slot = ctx.frame_cache ? ctx.frame_cache->curved_views : own_views;
+    const CapPoints cap = cap_points(*mirror, draw.options.patches);
+    const plan::CurvedPlan& patches = **plan;
+    if (!views_slot) {
+        auto made = std::make_unique<CurvedViews>();
+        made->tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
+                                      window.full_height_px);
+        made->strip_rows = std::clamp(frame.height() - 2, kMinStripRows, std::max(kMinStripRows, made->tile.y));
+        made->strips_per_patch = (made->tile.y + made->strip_rows - 1) / made->strip_rows;
+        made->quads = cap_quads(cap, patches, draw.camera.matrix(), window.full_width_px, window.full_height_px,
+                                made->tile);
+        made->strips.resize(patches.patches.size() * static_cast<std::size_t>(made->strips_per_patch));
+        views_slot = std::move(made);
     }
-    const gl::OffscreenTarget* atlas = &*atlas_slot;
-    auto mesh = upload_cap(ctx.fn, *mirror, draw.options.patches);
+    CurvedViews& views = *views_slot;
+    const plan::PixelRect rows{0, window.rect.y, window.full_width_px, window.rect.height};
+    for (const plan::PatchFrustum& patch : patches.patches) {
+        const auto k = static_cast<std::size_t>(patch.j * patches.grid + patch.i);
+        const std::optional<glm::ivec2> kept = strips_read(views, k, rows);
+        const std::optional<glm::ivec2> read = strips_read(views, k, window.rect);
+        for (int s = 0; s < views.strips_per_patch; ++s) {
+            std::optional<gl::OffscreenTarget>& strip =
+                views.strips[k * static_cast<std::size_t>(views.strips_per_patch) + static_cast<std::size_t>(s)];
+            if (!kept || s < kept->x || s > kept->y) {
+                strip.reset();
+            } else if (!strip && read && s >= read->x && s <= read->y) {
+                auto made = render_strip(ctx, frame, patch, views, s, draw.mirror.instance);
+                if (!made) {
+                    return made.take_error();
+                }
+                strip = std::move(*made);
+            }
+        }
+    }
+    auto mesh = upload_cap(ctx.fn, cap, draw.options.patches);
     if (!mesh) {
         return mesh.take_error();
     }
@@ -243,7 +432,7 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
     SceneDraw main(*on_frame);
     main.skip_instance = draw.mirror.instance;
     draw_scene(ctx, main);
-    draw_cap(ctx, draw, *on_frame, **plan, *mesh, *atlas, tile);
+    draw_cap(ctx, draw, *on_frame, **plan, *mesh, views, window.rect);
     return gl::check_error(ctx.fn, "render::draw_curved_mirror_frame()");
 }
 

@@ -3,10 +3,10 @@
 // gets the frustum plan_curved_mirror() fits to its reflected volume; the
 // scene is rendered once per patch with it (an ordinary, unmirrored view
 // from the patch origin O behind the mirror: no reflection matrix, no
-// winding flip, like frustum::mirror_rectangle) into the patch's tile of an
-// atlas texture. Then the frame: the scene without the planar mirror's
+// winding flip, like frustum::mirror_rectangle) into the patch's view, a
+// texture of its own. Then the frame: the scene without the planar mirror's
 // surface, and the cap, each fragment of patch (i, j) projecting its own
-// world position with that patch's matrix into the patch's tile. The
+// world position with that patch's matrix into the patch's view. The
 // fragment is not on the patch frustum's near plane (the cap bulges in
 // front of its corners' plane by up to the patch's own sagitta): the lookup
 // follows the ray O -> fragment, which is the approximation the fitted
@@ -14,6 +14,7 @@
 #pragma once
 
 #include "plan/curved_mirror.hpp"
+#include "plan/mirror_geometry.hpp"
 #include "render/pass_context.hpp"
 
 #include <frustum/matrix_pair.hpp>
@@ -22,6 +23,9 @@
 #include <scene/scene.hpp>
 
 #include <glm/glm.hpp>
+
+#include <optional>
+#include <vector>
 
 namespace render {
 
@@ -33,7 +37,29 @@ struct CurvedDraw {
     scene::Bounds bounds;               // the patch frustums' far planes lie beyond it
 };
 
-// Atlas tiles: width along a1, height along a2, each the longest on-screen
+// The patches' views of one frame: patch k's view (index j G + i) is
+// `tile` texels, kept as strips of `strip_rows` texel rows (what the first
+// target drawn into holds, less two: a direct render's whole view, a
+// poster tile's height), each a colour-only texture with a row of margin
+// above and below (for the bilinear lookup). A strip is made when a target first shows a fragment that
+// samples it and let go when a target's rows of the frame do not any more
+// (a poster's tiles come a row of tiles at a time), so a poster holds only
+// the strips its current row of tiles samples, not all G^2 views.
+struct CurvedViews {
+    // A quad of the cap mesh: the frame pixels its two triangles can reach
+    // and the view rows their lookups can read (inclusive), both rounded out.
+    struct Quad {
+        plan::PixelRect screen;
+        int first_row = 0, last_row = 0;
+    };
+    glm::ivec2 tile{0}; // curved_tile_size()
+    int strip_rows = 0;
+    int strips_per_patch = 0;
+    std::vector<std::vector<Quad>> quads;                   // per patch
+    std::vector<std::optional<gl::OffscreenTarget>> strips; // patch k's strip s at k strips_per_patch + s
+};
+
+// Patch views: width along a1, height along a2, each the longest on-screen
 // length of a patch edge in that direction (so a texel is never larger than
 // a screen pixel), at least 4 and at most 4096 / G texels.
 glm::ivec2 curved_tile_size(const plan::CurvedMirror& mirror, const frustum::MatrixPair<float>& camera, int grid,

@@ -13,6 +13,7 @@
 
 namespace render {
 
+struct CurvedViews;     // curved_pass.hpp
 struct NonAffineUpload; // non_affine_pass.hpp
 
 struct FrameCache {
@@ -21,9 +22,10 @@ struct FrameCache {
     FrameCache(FrameCache&&) noexcept;
     FrameCache& operator=(FrameCache&&) noexcept;
 
-    // The curved mirror's patch atlas (curved_pass.cpp): planned for the
-    // whole frame, so the same for every tile; up to 4096 x 4096 texels.
-    std::optional<gl::OffscreenTarget> curved_atlas;
+    // The curved mirror's patch views (curved_pass.hpp): planned for the
+    // whole frame, so the same for every tile; only the views of the
+    // patches the current row of tiles meets are alive.
+    std::unique_ptr<CurvedViews> curved_views;
     // The mirror effect's reflection texture with the rectangle method
     // (mirror_pass.cpp): it spans the mirror rectangle, not the screen, so
     // every tile samples the same one; resolved colour only.

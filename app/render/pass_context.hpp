@@ -37,7 +37,7 @@ struct PassContext {
     Lighting lighting;
     glm::vec4 clear_color = kClearColor;
     // MSAA samples of the frame; the passes' own targets (the reflection
-    // texture, the curved mirror's atlas) are multisampled alike and resolved.
+    // texture, the curved mirror's patch views) are multisampled alike and resolved.
     int samples = 1;
     // RenderOptions::pass_end: called as a pass ends, when set.
     std::function<void(const char* pass)> pass_end = {};
@@ -46,7 +46,7 @@ struct PassContext {
     // Unset: the target is the whole frame.
     std::optional<FrameWindow> window = {};
     // The tiles of one poster share what each would draw the same (the
-    // curved mirror's atlas); null: nothing kept.
+    // curved mirror's patch views); null: nothing kept.
     FrameCache* frame_cache = nullptr;
 };
 

@@ -157,7 +157,7 @@ frustum::Status draw_poster(const Renderer& renderer, plan::Effect effect, const
     // again only when the size changes.
     std::optional<gl::OffscreenTarget> target;
     // What every tile of one view draws the same (the curved mirror's
-    // atlas, the rectangle method's reflection): one cache per view.
+    // patch views, the rectangle method's reflection): one cache per view.
     std::vector<FrameCache> caches(views.size());
     // One row of tiles, kept from row to row (cut for the last one): every
     // tile is read back into its columns, so the row needs no clearing.

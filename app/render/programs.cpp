@@ -141,8 +141,9 @@ frustum::Result<CurvedMirrorProgram> CurvedMirrorProgram::build(const gl::Functi
                            std::string(shaders::curved_mirror_frag)},
                       {{"u_view_projection", &p.view_projection_},
                        {"u_patch_matrix", &p.patch_matrix_},
-                       {"u_atlas", &p.atlas_},
-                       {"u_tile", &p.tile_},
+                       {"u_view", &p.view_},
+                       {"u_view_rows", &p.view_rows_},
+                       {"u_strip", &p.strip_},
                        {"u_half_texel", &p.half_texel_},
                        {"u_tint", &p.tint_}});
     });
@@ -150,8 +151,9 @@ frustum::Result<CurvedMirrorProgram> CurvedMirrorProgram::build(const gl::Functi
 
 void CurvedMirrorProgram::set_view_projection(const glm::mat4& matrix) const { set(view_projection_, matrix); }
 void CurvedMirrorProgram::set_patch_matrix(const glm::mat4& matrix) const { set(patch_matrix_, matrix); }
-void CurvedMirrorProgram::set_atlas_texture_unit(int unit) const { set(atlas_, unit); }
-void CurvedMirrorProgram::set_tile(const glm::vec4& uv_rect) const { set(tile_, uv_rect); }
+void CurvedMirrorProgram::set_view_texture_unit(int unit) const { set(view_, unit); }
+void CurvedMirrorProgram::set_view_rows(float rows) const { set(view_rows_, rows); }
+void CurvedMirrorProgram::set_strip(const glm::vec4& rows) const { set(strip_, rows); }
 void CurvedMirrorProgram::set_half_texel(const glm::vec2& uv) const { set(half_texel_, uv); }
 void CurvedMirrorProgram::set_tint(const glm::vec3& rgb) const { set(tint_, rgb); }
 

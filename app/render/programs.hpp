@@ -108,21 +108,23 @@ private:
     GLint view_projection_ = -1, model_ = -1, reflection_matrix_ = -1, reflection_ = -1, tint_ = -1;
 };
 
-// shaders/curved_mirror.*: a curved mirror's patch with a lookup in its atlas tile.
+// shaders/curved_mirror.*: a curved mirror's patch with a lookup in its view (one texture per patch).
 class CurvedMirrorProgram : public ShaderProgram {
 public:
     static frustum::Result<CurvedMirrorProgram> build(const gl::Functions& fn);
 
     void set_view_projection(const glm::mat4& matrix) const;
     void set_patch_matrix(const glm::mat4& matrix) const;
-    void set_atlas_texture_unit(int unit) const;
-    // The patch's tile in atlas uv: x, y of its corner, then width, height.
-    void set_tile(const glm::vec4& uv_rect) const;
+    void set_view_texture_unit(int unit) const;
+    // The view's height in texel rows, and the strip bound: its rows
+    // [x, y) of the view, held by texture rows from z on, w of them.
+    void set_view_rows(float rows) const;
+    void set_strip(const glm::vec4& rows) const;
     void set_half_texel(const glm::vec2& uv) const;
     void set_tint(const glm::vec3& rgb) const;
 
 private:
-    GLint view_projection_ = -1, patch_matrix_ = -1, atlas_ = -1, tile_ = -1, half_texel_ = -1, tint_ = -1;
+    GLint view_projection_ = -1, patch_matrix_ = -1, view_ = -1, view_rows_ = -1, strip_ = -1, half_texel_ = -1, tint_ = -1;
 };
 
 // shaders/line.*: flat-colour lines and points.

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -144,6 +145,72 @@ TEST_CASE("read_rgba8_into() puts the target's rows, top to bottom, in its colum
           "gl::OffscreenTarget::read_rgba8_into(): a 64x64 target at column 4 does not fit a 67x64 image");
     image::Image low = image::make_image(kSize * 2, kSize - 1, kUntouched);
     CHECK_FALSE(target->read_rgba8_into(low, 0).ok());
+}
+
+TEST_CASE("blit_color_to() moves a multisampled target's bottom-left part to any place in a larger texture") {
+    auto env = gl_test::make_any_environment();
+    if (!env) {
+        return;
+    }
+    const gl::Functions& fn = env->fn;
+    for (int samples : {1, 4}) {
+        if (samples > gl::max_samples(fn)) {
+            continue;
+        }
+        INFO("samples: " << samples);
+        auto drawn = gl::OffscreenTarget::create(fn, {kSize, kSize, gl::ColorStorage::Renderbuffer,
+                                                      gl::DepthFormat::Depth24, samples});
+        REQUIRE_MESSAGE(drawn.ok(), drawn.error());
+        draw_cleared_triangle(fn, kTopTriangle);
+        auto alone = drawn->read_rgba8();
+        REQUIRE_MESSAGE(alone.ok(), alone.error());
+
+        // Two parts of kSize x kSize / 2 (the drawn image's bottom half), one
+        // at the origin and one at (kSize + 3, kSize / 2 + 1), into a texture
+        // cleared to kUntouched.
+        constexpr int kTo = 2 * kSize + 8;
+        auto texture = gl::OffscreenTarget::create(fn, {kTo, kTo, gl::ColorStorage::Texture, gl::DepthFormat::None, 1});
+        REQUIRE_MESSAGE(texture.ok(), texture.error());
+        fn.ClearColor(7 / 255.0f, 8 / 255.0f, 9 / 255.0f, 10 / 255.0f);
+        fn.Clear(GL_COLOR_BUFFER_BIT);
+        constexpr int kPartX = kSize + 3, kPartY = kSize / 2 + 1;
+        for (const auto& [x, y] : {std::pair{0, 0}, std::pair{kPartX, kPartY}}) {
+            auto blit = drawn->blit_color_to(*texture, kSize, kSize / 2, x, y);
+            REQUIRE_MESSAGE(blit.ok(), blit.error());
+        }
+        auto got = texture->read_rgba8();
+        REQUIRE_MESSAGE(got.ok(), got.error());
+        constexpr image::Rgba kUntouched{7, 8, 9, 10};
+        int differing = 0, touched_outside = 0;
+        for (int y = 0; y < kTo; ++y) { // image rows, top to bottom
+            for (int x = 0; x < kTo; ++x) {
+                const int from_bottom = kTo - 1 - y;
+                const image::Rgba pixel = image::pixel_at(*got, x, y);
+                std::optional<image::Rgba> expected;
+                for (const auto& [px, py] : {std::pair{0, 0}, std::pair{kPartX, kPartY}}) {
+                    if (x >= px && x < px + kSize && from_bottom >= py && from_bottom < py + kSize / 2) {
+                        expected = image::pixel_at(*alone, x - px, kSize - 1 - (from_bottom - py));
+                    }
+                }
+                if (expected) {
+                    differing += !(pixel == *expected);
+                } else {
+                    touched_outside += !gl_test::near(pixel, kUntouched, kRoundingTolerance);
+                }
+            }
+        }
+        CHECK(differing == 0);
+        CHECK(touched_outside == 0);
+
+        auto outside = drawn->blit_color_to(*texture, kSize, kSize / 2, kTo - kSize + 1, 0);
+        REQUIRE_FALSE(outside.ok());
+        CHECK(outside.error() == "gl::OffscreenTarget::blit_color_to(): 64x32 pixels at (73, 0) must fit both the "
+                                 "64x64 target and the 136x136 one");
+        CHECK_FALSE(drawn->blit_color_to(*texture, kSize, kSize, 0, -1).ok());
+        if (samples > 1) { // into a multisampled target
+            CHECK_FALSE(texture->blit_color_to(*drawn, 8, 8).ok());
+        }
+    }
 }
 
 TEST_CASE("EGL and OSMesa images agree") {
