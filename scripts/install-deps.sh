@@ -46,5 +46,26 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# Another apt (a second checkout's install, unattended upgrades) may hold
+# the dpkg or list locks: wait for them, up to ten minutes, instead of
+# failing. DPkg::Lock::Timeout covers dpkg's lock but not the lists' lock
+# of `apt-get update` (apt 2.6), hence the loop.
+apt_get() {
+  local out attempt
+  for attempt in $(seq 1 60); do
+    if out=$($SUDO apt-get -o DPkg::Lock::Timeout=600 "$@" 2>&1); then
+      [ -z "$out" ] || printf '%s\n' "$out"
+      return 0
+    fi
+    if ! grep -q "Could not get lock\|Unable to lock" <<<"$out"; then
+      printf '%s\n' "$out" >&2
+      return 1
+    fi
+    echo "install-deps: another apt holds the lock; waiting (attempt $attempt of 60)" >&2
+    sleep 10
+  done
+  printf '%s\n' "$out" >&2
+  return 1
+}
+apt_get update -qq
+apt_get install -y -qq --no-install-recommends "${missing[@]}"

@@ -4,6 +4,7 @@
 #include <frustum/mirror.hpp>
 #include <frustum/queries.hpp>
 #include <frustum/reflect.hpp>
+#include <frustum/screen_rect.hpp>
 
 #include <algorithm>
 #include <array>
@@ -30,23 +31,6 @@ std::array<glm::vec3, 4> corners(const scene::MirrorRect& m) {
 float near_value(const glm::vec4& clip, frustum::DepthRange depth) {
     const float sign = frustum::clip_z_span<float>(depth) > 0.0f ? 1.0f : -1.0f;
     return sign * (clip.z - frustum::clip_z_near<float>(depth) * clip.w);
-}
-
-// Sutherland-Hodgman against the near plane alone.
-std::vector<glm::vec4> clip_at_near(const std::array<glm::vec4, 4>& polygon, frustum::DepthRange depth) {
-    std::vector<glm::vec4> out;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const glm::vec4& a = polygon[i];
-        const glm::vec4& b = polygon[(i + 1) % polygon.size()];
-        const float da = near_value(a, depth), db = near_value(b, depth);
-        if (da >= 0.0f) {
-            out.push_back(a);
-        }
-        if ((da >= 0.0f) != (db >= 0.0f)) {
-            out.push_back(a + (b - a) * (da / (da - db)));
-        }
-    }
-    return out;
 }
 
 // NDC x, y in [-1, 1] -> pixels from the bottom-left.
@@ -102,32 +86,27 @@ frustum::Plane<float> mirror_plane(const scene::MirrorRect& mirror) {
     return frustum::Plane<float>(glm::vec4(normal, -glm::dot(normal, mirror.corner)));
 }
 
-std::optional<PixelRect> mirror_screen_rect(const scene::MirrorRect& mirror, const frustum::MatrixPair<float>& camera,
-                                            int width_px, int height_px) {
-    const auto points = corners(mirror);
-    std::array<glm::vec4, 4> clip{};
-    for (std::size_t i = 0; i < 4; ++i) {
-        clip[i] = camera.matrix() * glm::vec4(points[i], 1.0f);
-    }
-    const std::vector<glm::vec4> visible = clip_at_near(clip, camera.depth());
-    if (visible.empty()) {
+std::optional<PixelRect> pixels_seen(const frustum::MatrixPair<float>& camera, const std::vector<glm::vec3>& polygon,
+                                     int width_px, int height_px) {
+    const auto seen = frustum::screen_rect(camera, polygon, static_cast<float>(width_px), static_cast<float>(height_px));
+    if (!seen || !*seen) {
         return std::nullopt;
     }
-    glm::vec2 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
-    for (const glm::vec4& c : visible) {
-        // In front of the near plane w > 0 (the pair's sign convention).
-        const glm::vec2 p = to_pixels(c, width_px, height_px);
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-    }
-    const int x0 = std::clamp(static_cast<int>(std::floor(low.x)), 0, width_px);
-    const int y0 = std::clamp(static_cast<int>(std::floor(low.y)), 0, height_px);
-    const int x1 = std::clamp(static_cast<int>(std::ceil(high.x)), 0, width_px);
-    const int y1 = std::clamp(static_cast<int>(std::ceil(high.y)), 0, height_px);
+    const frustum::CropRect<float>& r = **seen;
+    const int x0 = std::clamp(static_cast<int>(std::floor(r.x)), 0, width_px);
+    const int y0 = std::clamp(static_cast<int>(std::floor(r.y)), 0, height_px);
+    const int x1 = std::clamp(static_cast<int>(std::ceil(r.x + r.width)), 0, width_px);
+    const int y1 = std::clamp(static_cast<int>(std::ceil(r.y + r.height)), 0, height_px);
     if (x1 <= x0 || y1 <= y0) {
         return std::nullopt;
     }
     return PixelRect{x0, y0, x1 - x0, y1 - y0};
+}
+
+std::optional<PixelRect> mirror_screen_rect(const scene::MirrorRect& mirror, const frustum::MatrixPair<float>& camera,
+                                            int width_px, int height_px) {
+    const auto points = corners(mirror);
+    return pixels_seen(camera, std::vector<glm::vec3>(points.begin(), points.end()), width_px, height_px);
 }
 
 frustum::Result<std::optional<ReflectionView>> plan_reflection(const scene::MirrorRect& mirror,

@@ -10,6 +10,7 @@
 #include <scene/scene.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace plan {
 
@@ -23,10 +24,17 @@ struct PixelRect {
 // reflecting side (scene.hpp), which is where the eye must be.
 frustum::Plane<float> mirror_plane(const scene::MirrorRect& mirror);
 
-// The pixels the mirror quad can cover: its corners projected with `camera`
-// (after clipping the quad at the near plane, so corners behind the eye do
-// not wrap around), bounded in whole pixels (floor / ceil) and clamped to the
-// width_px x height_px viewport. Empty when nothing is left.
+// The whole pixels of a width_px x height_px image that `camera` sees of a
+// planar convex polygon: frustum::screen_rect() (the polygon clipped by the
+// frustum's planes in clip space, near first, so that a point behind the
+// eye is never projected), rounded out to whole pixels (floor / ceil).
+// Empty when nothing of it is seen (or only an edge), and when
+// screen_rect() refuses it: fewer than 3 points, a point not finite, a
+// size not > 0.
+std::optional<PixelRect> pixels_seen(const frustum::MatrixPair<float>& camera, const std::vector<glm::vec3>& polygon,
+                                     int width_px, int height_px);
+
+// The pixels the mirror quad can cover: pixels_seen() of its corners.
 std::optional<PixelRect> mirror_screen_rect(const scene::MirrorRect& mirror, const frustum::MatrixPair<float>& camera,
                                             int width_px, int height_px);
 

@@ -51,11 +51,6 @@ CapPoints cap_points(const plan::CurvedMirror& mirror, int grid) {
 // The cap as one indexed triangle mesh, M x M quads, its indices grouped
 // by patch and, in a patch, by quad as cap_quads() lists them: quad q of
 // patch k = j G + i is the 6 indices from (k per_patch^2 + q) 6.
-struct CapMesh {
-    gl::VertexArray vertex_array;
-    gl::Buffer vertex_buffer, index_buffer;
-};
-
 frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CapPoints& cap, int grid) {
     const int m = cap.m;
     // Counter-clockwise seen from the reflecting side (a1 right, a2 up).
@@ -104,45 +99,52 @@ frustum::Result<CapMesh> upload_cap(const gl::Functions& fn, const CapPoints& ca
 // whole view: one strip per patch), and at least this many.
 constexpr int kMinStripRows = 16;
 
-// Rounded out by a pixel (or texel): floor(lo) - 1 .. ceil(hi) + 1, clamped to [0, size].
-glm::ivec2 rounded_out(float lo, float hi, int size) {
-    const float low = std::clamp(std::floor(lo) - 1.0f, 0.0f, static_cast<float>(size));
-    const float high = std::clamp(std::ceil(hi) + 1.0f, 0.0f, static_cast<float>(size));
-    return {static_cast<int>(low), static_cast<int>(high)};
+// The view rows a lookup between rows lo and hi can read, rounded out by
+// one (the bilinear lookup's neighbour): first and last, inclusive,
+// clamped to the view's rows 0 .. last_row.
+glm::ivec2 rows_read(float lo, float hi, int last_row) {
+    const float first = std::clamp(std::floor(lo) - 1.0f, 0.0f, static_cast<float>(last_row));
+    const float last = std::clamp(std::ceil(hi) + 1.0f, 0.0f, static_cast<float>(last_row));
+    return {static_cast<int>(first), static_cast<int>(last)};
 }
 
-// The cap mesh's quads, per patch: the frame pixels each can reach (its
-// vertices projected with the whole frame's camera) and the view rows its
-// lookups can read (its vertices projected with the patch's matrix). A
-// flat triangle's fragments, and their lookups, lie in the box of its
-// vertices' projections when all three are in front of the eye (w > 0; the
-// near plane only clips more away); a quad with a vertex at or behind
-// either eye may reach any pixel or read any row.
+// `r` grown by a pixel each way (for the GPU's rounding against ours), inside width_px x height_px.
+plan::PixelRect grown(const plan::PixelRect& r, int width_px, int height_px) {
+    const int x0 = std::max(0, r.x - 1), y0 = std::max(0, r.y - 1);
+    const int x1 = std::min(width_px, r.x + r.width + 1), y1 = std::min(height_px, r.y + r.height + 1);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+// The cap mesh's quads, per patch: the frame pixels each can reach (its two
+// triangles' pixels_seen(), whole frame's camera: clipped at the near plane
+// before projecting) and the view rows its lookups can read (its vertices
+// projected with the patch's matrix; the lookup is clamped into the view,
+// so a vertex at or behind the patch's eye may read any row).
 std::vector<std::vector<CurvedViews::Quad>> cap_quads(const CapPoints& cap, const plan::CurvedPlan& plan,
-                                                      const glm::mat4& camera, int width_px, int height_px,
-                                                      const glm::ivec2& tile) {
-    const glm::vec2 size(static_cast<float>(width_px), static_cast<float>(height_px));
+                                                      const frustum::MatrixPair<float>& camera, int width_px,
+                                                      int height_px, const glm::ivec2& tile) {
     std::vector<std::vector<CurvedViews::Quad>> quads(plan.patches.size());
+    std::vector<glm::vec3> triangle(3);
     for (const plan::PatchFrustum& patch : plan.patches) {
         std::vector<CurvedViews::Quad>& out = quads[static_cast<std::size_t>(patch.j * plan.grid + patch.i)];
         const glm::mat4 lookup = patch.pair ? patch.pair->matrix() : glm::mat4(1.0f);
         for (int y = patch.j * cap.per_patch; y < (patch.j + 1) * cap.per_patch; ++y) {
             for (int x = patch.i * cap.per_patch; x < (patch.i + 1) * cap.per_patch; ++x) {
-                glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-                float row_lo = std::numeric_limits<float>::max(), row_hi = std::numeric_limits<float>::lowest();
-                bool on_screen = true, in_view = true;
-                for (const glm::ivec2 corner : {glm::ivec2(x, y), glm::ivec2(x + 1, y), glm::ivec2(x, y + 1),
-                                                glm::ivec2(x + 1, y + 1)}) {
-                    const glm::vec4 p(cap.at(corner.x, corner.y), 1.0f);
-                    const glm::vec4 clip = camera * p;
-                    if (clip.w > 0.0f) {
-                        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size;
-                        lo = glm::min(lo, px);
-                        hi = glm::max(hi, px);
-                    } else {
-                        on_screen = false;
+                // Corners in the mesh's order: the triangles are 0 1 2 and 0 2 3 (upload_cap()).
+                const glm::vec3 corners[4] = {cap.at(x, y), cap.at(x + 1, y), cap.at(x + 1, y + 1), cap.at(x, y + 1)};
+                std::optional<plan::PixelRect> screen;
+                for (const auto& [b, c] : {std::pair{1, 2}, std::pair{2, 3}}) {
+                    triangle[0] = corners[0];
+                    triangle[1] = corners[b];
+                    triangle[2] = corners[c];
+                    if (const auto seen = plan::pixels_seen(camera, triangle, width_px, height_px)) {
+                        screen = screen ? bounding(*screen, *seen) : *seen;
                     }
-                    const glm::vec4 view = lookup * p;
+                }
+                float row_lo = std::numeric_limits<float>::max(), row_hi = std::numeric_limits<float>::lowest();
+                bool in_view = true;
+                for (const glm::vec3& corner : corners) {
+                    const glm::vec4 view = lookup * glm::vec4(corner, 1.0f);
                     if (view.w > 0.0f) {
                         const float row = (view.y / view.w * 0.5f + 0.5f) * static_cast<float>(tile.y);
                         row_lo = std::min(row_lo, row);
@@ -152,19 +154,11 @@ std::vector<std::vector<CurvedViews::Quad>> cap_quads(const CapPoints& cap, cons
                     }
                 }
                 CurvedViews::Quad quad;
-                quad.screen = plan::PixelRect{0, 0, width_px, height_px};
-                if (on_screen) {
-                    const glm::ivec2 xs = rounded_out(lo.x, hi.x, width_px);
-                    const glm::ivec2 ys = rounded_out(lo.y, hi.y, height_px);
-                    quad.screen = plan::PixelRect{xs.x, ys.x, xs.y - xs.x, ys.y - ys.x};
-                }
-                quad.first_row = 0;
-                quad.last_row = tile.y - 1;
-                if (in_view) { // the lookup is clamped into the view: rows outside read its edge
-                    const glm::ivec2 rows = rounded_out(row_lo, row_hi, tile.y - 1);
-                    quad.first_row = rows.x;
-                    quad.last_row = rows.y;
-                }
+                // Not seen: an empty rectangle, which meets no target's window.
+                quad.screen = screen ? grown(*screen, width_px, height_px) : plan::PixelRect{0, 0, 0, 0};
+                const glm::ivec2 rows = in_view ? rows_read(row_lo, row_hi, tile.y - 1) : glm::ivec2(0, tile.y - 1);
+                quad.first_row = rows.x;
+                quad.last_row = rows.y;
                 out.push_back(quad);
             }
         }
@@ -175,6 +169,9 @@ std::vector<std::vector<CurvedViews::Quad>> cap_quads(const CapPoints& cap, cons
 // The strips of one patch whose rows the quads seen in `rect` read: first
 // and last (inclusive), or none when no quad is seen there.
 std::optional<glm::ivec2> strips_read(const CurvedViews& views, std::size_t patch, const plan::PixelRect& rect) {
+    if (views.quads.empty()) { // the whole frame in one target, each view one strip
+        return glm::ivec2(0, 0);
+    }
     std::optional<glm::ivec2> rows;
     for (const CurvedViews::Quad& quad : views.quads[patch]) {
         if (intersect(quad.screen, rect)) {
@@ -258,8 +255,9 @@ frustum::Result<gl::OffscreenTarget> render_strip(const PassContext& ctx, const 
 // that holds its lookup's row (a quad across two strips is drawn by both,
 // each keeping its own fragments), so nearly every fragment is shaded once.
 void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::MatrixPair<float>& on_frame,
-              const plan::CurvedPlan& plan, const CapMesh& mesh, const CurvedViews& views,
-              const plan::PixelRect& window) {
+              const CurvedViews& views, const plan::PixelRect& window) {
+    const plan::CurvedPlan& plan = *views.plan;
+    const CapMesh& mesh = views.cap;
     const gl::Functions& fn = ctx.fn;
     const CurvedMirrorProgram& p = ctx.programs.curved_mirror;
     p.use();
@@ -280,12 +278,16 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
         }
         // Without a frustum any matrix will do: the view holds only the clear colour.
         p.set_patch_matrix(patch.pair ? patch.pair->matrix() : glm::mat4(1.0f));
-        const std::vector<CurvedViews::Quad>& quads = views.quads[k];
+        const auto count = static_cast<std::size_t>(views.quads_per_patch);
         for (int s = read->x; s <= read->y; ++s) {
             const StripRows rows = strip_rows(views, s);
             const auto drawn = [&](std::size_t q) {
-                return quads[q].first_row < rows.end && quads[q].last_row >= rows.first &&
-                       intersect(quads[q].screen, window).has_value();
+                if (views.quads.empty()) {
+                    return true;
+                }
+                const CurvedViews::Quad& quad = views.quads[k][q];
+                return quad.first_row < rows.end && quad.last_row >= rows.first &&
+                       intersect(quad.screen, window).has_value();
             };
             fn.BindTexture(GL_TEXTURE_2D,
                            views.strips[k * static_cast<std::size_t>(views.strips_per_patch) +
@@ -296,16 +298,16 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
                                   static_cast<float>(rows.texture_first),
                                   static_cast<float>(rows.texture_end - rows.texture_first)));
             // Quad q of patch k: 6 indices from (k quads per patch + q) 6, as upload_cap() orders them.
-            for (std::size_t q = 0; q < quads.size();) {
+            for (std::size_t q = 0; q < count;) {
                 if (!drawn(q)) {
                     ++q;
                     continue;
                 }
                 std::size_t end = q + 1;
-                while (end < quads.size() && drawn(end)) {
+                while (end < count && drawn(end)) {
                     ++end;
                 }
-                const std::size_t first = (k * quads.size() + q) * 6 * sizeof(std::uint32_t);
+                const std::size_t first = (k * count + q) * 6 * sizeof(std::uint32_t);
                 fn.DrawElements(GL_TRIANGLES, static_cast<GLsizei>((end - q) * 6), GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(first));
                 q = end;
@@ -315,6 +317,47 @@ void draw_cap(const PassContext& ctx, const CurvedDraw& draw, const frustum::Mat
     fn.BindVertexArray(0);
     fn.BindTexture(GL_TEXTURE_2D, 0);
     restore_face_state(fn);
+}
+
+// The frame's plan (CurvedViews), made by the first target drawn into:
+// `frame_height_px` tall, in `window` of the frame.
+frustum::Result<std::unique_ptr<CurvedViews>> plan_views(const PassContext& ctx, const CurvedDraw& draw,
+                                                         const FrameWindow& window, int frame_height_px) {
+    auto views = std::make_unique<CurvedViews>();
+    auto mirror = plan::CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
+    if (!mirror) {
+        return frustum::Error{kDraw + mirror.error()};
+    }
+    const auto eye = frustum::eye_point(draw.camera);
+    if (!eye) {
+        return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
+    }
+    auto plan = plan::plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
+    if (!plan) {
+        return frustum::Error{kDraw + plan.error()};
+    }
+    if (!plan->has_value()) {
+        return views; // no plan: the plain frame
+    }
+    views->plan = std::move(**plan);
+    const CapPoints cap = cap_points(*mirror, draw.options.patches);
+    auto mesh = upload_cap(ctx.fn, cap, draw.options.patches);
+    if (!mesh) {
+        return mesh.take_error();
+    }
+    views->cap = std::move(*mesh);
+    views->quads_per_patch = cap.per_patch * cap.per_patch;
+    views->tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
+                                   window.full_height_px);
+    views->strip_rows = std::clamp(frame_height_px - 2, kMinStripRows, std::max(kMinStripRows, views->tile.y));
+    views->strips_per_patch = (views->tile.y + views->strip_rows - 1) / views->strip_rows;
+    const bool whole = window.rect.width == window.full_width_px && window.rect.height == window.full_height_px;
+    if (!whole || views->strips_per_patch > 1) { // which tiles a quad reaches, which strips it reads
+        views->quads = cap_quads(cap, *views->plan, draw.camera, window.full_width_px, window.full_height_px,
+                                 views->tile);
+    }
+    views->strips.resize(views->plan->patches.size() * static_cast<std::size_t>(views->strips_per_patch));
+    return views;
 }
 
 } // namespace
@@ -368,45 +411,28 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
         draw_scene(ctx, SceneDraw{*on_frame});
         return {};
     };
-    auto mirror = plan::CurvedMirror::create(draw.mirror, draw.options.shape, draw.options.sagitta_m);
-    if (!mirror) {
-        return frustum::Error{kDraw + mirror.error()};
-    }
-    const auto eye = frustum::eye_point(draw.camera);
-    if (!eye) {
-        return frustum::Error{std::string(kDraw) + "the curved mirror needs a finite eye (perspective camera)"};
-    }
-    auto plan = plan::plan_curved_mirror(*mirror, glm::dvec3(*eye), draw.bounds, draw.options.patches);
-    if (!plan) {
-        return frustum::Error{kDraw + plan.error()};
-    }
-    if (!plan->has_value()) {
-        return plain();
-    }
-    // The patches' views are the frame's (a poster's tiles share them,
-    // frame_cache.hpp). A strip is made when a target first reads it and
-    // let go when a target's rows of the frame do not read it any more: a
-    // poster drawn a row of tiles at a time keeps the strips its current
-    // row reads, each drawn once when the rows read go one way.
+    // Planned once for the whole frame (a poster's tiles share it,
+    // frame_cache.hpp): the fits, the cap, the views' size and strips. A
+    // strip is made when a target first reads it and let go when a target's
+    // rows of the frame do not read it any more: a poster drawn a row of
+    // tiles at a time keeps the strips its current row reads, each drawn
+    // once when the rows read go one way.
     std::unique_ptr<CurvedViews> own_views;
     std::unique_ptr<CurvedViews>& views_slot = ctx.frame_cache ? ctx.frame_cache->curved_views : own_views;
-    const CapPoints cap = cap_points(*mirror, draw.options.patches);
-    const plan::CurvedPlan& patches = **plan;
     if (!views_slot) {
-        auto made = std::make_unique<CurvedViews>();
-        made->tile = curved_tile_size(*mirror, draw.camera, draw.options.patches, window.full_width_px,
-                                      window.full_height_px);
-        made->strip_rows = std::clamp(frame.height() - 2, kMinStripRows, std::max(kMinStripRows, made->tile.y));
-        made->strips_per_patch = (made->tile.y + made->strip_rows - 1) / made->strip_rows;
-        made->quads = cap_quads(cap, patches, draw.camera.matrix(), window.full_width_px, window.full_height_px,
-                                made->tile);
-        made->strips.resize(patches.patches.size() * static_cast<std::size_t>(made->strips_per_patch));
-        views_slot = std::move(made);
+        auto made = plan_views(ctx, draw, window, frame.height());
+        if (!made) {
+            return made.take_error();
+        }
+        views_slot = std::move(*made);
     }
     CurvedViews& views = *views_slot;
+    if (!views.plan) {
+        return plain();
+    }
     const plan::PixelRect rows{0, window.rect.y, window.full_width_px, window.rect.height};
-    for (const plan::PatchFrustum& patch : patches.patches) {
-        const auto k = static_cast<std::size_t>(patch.j * patches.grid + patch.i);
+    for (const plan::PatchFrustum& patch : views.plan->patches) {
+        const auto k = static_cast<std::size_t>(patch.j * views.plan->grid + patch.i);
         const std::optional<glm::ivec2> kept = strips_read(views, k, rows);
         const std::optional<glm::ivec2> read = strips_read(views, k, window.rect);
         for (int s = 0; s < views.strips_per_patch; ++s) {
@@ -423,16 +449,12 @@ frustum::Status draw_curved_mirror_frame(const PassContext& ctx, const gl::Offsc
             }
         }
     }
-    auto mesh = upload_cap(ctx.fn, cap, draw.options.patches);
-    if (!mesh) {
-        return mesh.take_error();
-    }
     frame.bind();
     begin_frame(ctx);
     SceneDraw main(*on_frame);
     main.skip_instance = draw.mirror.instance;
     draw_scene(ctx, main);
-    draw_cap(ctx, draw, *on_frame, **plan, *mesh, views, window.rect);
+    draw_cap(ctx, draw, *on_frame, views, window.rect);
     return gl::check_error(ctx.fn, "render::draw_curved_mirror_frame()");
 }
 

@@ -19,6 +19,7 @@
 
 #include <frustum/matrix_pair.hpp>
 #include <frustum/result.hpp>
+#include <gl/objects.hpp>
 #include <gl/offscreen_target.hpp>
 #include <scene/scene.hpp>
 
@@ -37,25 +38,40 @@ struct CurvedDraw {
     scene::Bounds bounds;               // the patch frustums' far planes lie beyond it
 };
 
-// The patches' views of one frame: patch k's view (index j G + i) is
-// `tile` texels, kept as strips of `strip_rows` texel rows (what the first
-// target drawn into holds, less two: a direct render's whole view, a
-// poster tile's height), each a colour-only texture with a row of margin
-// above and below (for the bilinear lookup). A strip is made when a target first shows a fragment that
-// samples it and let go when a target's rows of the frame do not any more
-// (a poster's tiles come a row of tiles at a time), so a poster holds only
-// the strips its current row of tiles samples, not all G^2 views.
+// The cap as one indexed triangle mesh (curved_pass.cpp: upload_cap()).
+struct CapMesh {
+    gl::VertexArray vertex_array;
+    gl::Buffer vertex_buffer, index_buffer;
+};
+
+// What the curved mirror plans once per frame (a poster's tiles share it,
+// frame_cache.hpp): the patches' fits, the cap's mesh, and the patches'
+// views. Patch k's view (index j G + i) is `tile` texels, kept as strips of
+// `strip_rows` texel rows (what the first target drawn into holds, less
+// two: a direct render's whole view, a poster tile's height), each a
+// colour-only texture with a row of margin above and below (for the
+// bilinear lookup). A strip is made when a target first shows a fragment
+// that samples it and let go when a target's rows of the frame do not any
+// more (a poster's tiles come a row of tiles at a time), so a poster holds
+// only the strips its current row of tiles samples, not all G^2 views.
 struct CurvedViews {
     // A quad of the cap mesh: the frame pixels its two triangles can reach
-    // and the view rows their lookups can read (inclusive), both rounded out.
+    // and the view rows their lookups can read (first and last, inclusive),
+    // each rounded out by one.
     struct Quad {
         plan::PixelRect screen;
         int first_row = 0, last_row = 0;
     };
+    std::optional<plan::CurvedPlan> plan; // empty: the eye is behind the footprint, the frame is plain
+    CapMesh cap;
     glm::ivec2 tile{0}; // curved_tile_size()
     int strip_rows = 0;
     int strips_per_patch = 0;
-    std::vector<std::vector<Quad>> quads;                   // per patch
+    int quads_per_patch = 0; // of the cap mesh
+    // Per patch, its quads; empty (not needed) when the frame is drawn
+    // whole in one target holding each view in one strip: then every quad
+    // is drawn and reads strip 0.
+    std::vector<std::vector<Quad>> quads;
     std::vector<std::optional<gl::OffscreenTarget>> strips; // patch k's strip s at k strips_per_patch + s
 };
 

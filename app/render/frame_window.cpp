@@ -33,6 +33,12 @@ std::optional<plan::PixelRect> intersect(const plan::PixelRect& a, const plan::P
     return plan::PixelRect{x0, y0, x1 - x0, y1 - y0};
 }
 
+plan::PixelRect bounding(const plan::PixelRect& a, const plan::PixelRect& b) {
+    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    const int x1 = std::max(a.x + a.width, b.x + b.width), y1 = std::max(a.y + a.height, b.y + b.height);
+    return plan::PixelRect{x0, y0, x1 - x0, y1 - y0};
+}
+
 plan::PixelRect in_target(const FrameWindow& window, const plan::PixelRect& r) {
     return {r.x - window.rect.x, r.y - window.rect.y, r.width, r.height};
 }

@@ -28,6 +28,9 @@ FrameWindow whole_frame(int width_px, int height_px);
 // The overlap of two pixel rectangles; empty when they do not overlap.
 std::optional<plan::PixelRect> intersect(const plan::PixelRect& a, const plan::PixelRect& b);
 
+// The smallest pixel rectangle holding both.
+plan::PixelRect bounding(const plan::PixelRect& a, const plan::PixelRect& b);
+
 // `r` in the target's pixels (offset by the window's corner).
 plan::PixelRect in_target(const FrameWindow& window, const plan::PixelRect& r);
 

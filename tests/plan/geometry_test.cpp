@@ -85,6 +85,40 @@ TEST_CASE("no reflection when the mirror is seen from behind or out of view") {
     CHECK_FALSE(plan_from(looking(center + 4.0f * normal, center + 8.0f * normal))); // facing away
 }
 
+TEST_CASE("pixels seen of a polygon: rounded out, clipped before projecting, empty when unseen") {
+    // Eye at the origin looking down -z, 160 x 90 pixels, near 0.1 m.
+    const auto camera = looking(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    const glm::vec2 size(160.0f, 90.0f);
+    // In front: the box of the projected corners, floor / ceil.
+    const std::vector<glm::vec3> ahead = {{-0.3f, -0.2f, -2.0f}, {0.25f, -0.2f, -2.0f}, {0.0f, 0.35f, -3.0f}};
+    glm::vec2 low(1e9f), high(-1e9f);
+    for (const glm::vec3& p : ahead) {
+        low = glm::min(low, to_pixels(camera, p, size));
+        high = glm::max(high, to_pixels(camera, p, size));
+    }
+    const auto seen = plan::pixels_seen(camera, ahead, 160, 90);
+    REQUIRE(seen.has_value());
+    CHECK(seen->x == static_cast<int>(std::floor(low.x)));
+    CHECK(seen->y == static_cast<int>(std::floor(low.y)));
+    CHECK(seen->x + seen->width == static_cast<int>(std::ceil(high.x)));
+    CHECK(seen->y + seen->height == static_cast<int>(std::ceil(high.y)));
+    // A triangle reaching behind the eye: the corner behind (w < 0) would
+    // project to the opposite side if it were divided; clipped first, the
+    // rectangle is what is in front, here the right half of the screen and
+    // below the middle row (the triangle lies at y = -0.5 m, x >= 0).
+    const std::vector<glm::vec3> crossing = {{0.0f, -0.5f, -3.0f}, {2.0f, -0.5f, -3.0f}, {2.0f, -0.5f, 3.0f}};
+    const auto behind = plan::pixels_seen(camera, crossing, 160, 90);
+    REQUIRE(behind.has_value());
+    CHECK(behind->x >= 79);
+    CHECK(behind->y + behind->height <= 45);
+    CHECK(behind->width > 0);
+    // Wholly behind the eye, or outside the view: nothing.
+    CHECK_FALSE(plan::pixels_seen(camera, {{0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 1.0f}, {0.0f, 1.0f, 2.0f}}, 160, 90));
+    CHECK_FALSE(plan::pixels_seen(camera, {{50.0f, 0.0f, -1.0f}, {51.0f, 0.0f, -1.0f}, {50.0f, 1.0f, -1.0f}}, 160, 90));
+    // What screen_rect() refuses is not seen either.
+    CHECK_FALSE(plan::pixels_seen(camera, {{0.0f, 0.0f, -1.0f}, {1.0f, 0.0f, -1.0f}}, 160, 90));
+}
+
 TEST_CASE("frustum lines: edges, eye lines and crosses where the key points are finite") {
     const plan::FrustumLineStyle style{0.1f, 50.0f};
     auto perspective = frustum::perspective<float>(1.0f, 1.5f, 0.5f, 20.0f, frustum::DepthRange::ZeroToOne);
