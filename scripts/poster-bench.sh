@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Posters (issue 36): peak RSS and time per megapixel of `frustum-demo
 # render` posters, per size and effect, as a Markdown table on stdout.
-#   scripts/poster-bench.sh [--scene city] DEMO SIZES EFFECTS [OUT_DIR]
+#   scripts/poster-bench.sh [--scene city|FILE] DEMO SIZES EFFECTS [OUT_DIR]
 #   e.g. nice scripts/poster-bench.sh build/app/demo/frustum-demo "4096 16384" "plain mirror mirror+stereo"
 # EFFECTS are --effect names; "E+stereo" is E with --stereo (both eyes side
 # by side, each eye a poster of its own camera's crop tiles).
 # --scene city: the large scene, a city of 14 x 14 blocks (399 318
 # triangles) written by scripts/make_city_gltf.py into the build folder of
 # DEMO (the folder above it holding CMakeCache.txt), poster-bench/city.glb,
-# at bench time (never committed); default: the showcase.
+# at bench time (never committed); --scene FILE: that glTF file (e.g.
+# tests/data/gltf-models/box.gltf, a scene with almost no edges); default:
+# the showcase.
 # Each run is one child process under /usr/bin/time -v: its "Maximum
 # resident set size" is the peak RSS (getrusage's ru_maxrss of the child),
 # its user + system time the CPU seconds of the whole process (loading the
@@ -28,7 +30,7 @@ if [ "${1:-}" = "--scene" ]; then
   shift 2
 fi
 if [ $# -lt 3 ]; then
-  echo "usage: scripts/poster-bench.sh [--scene city] DEMO SIZES EFFECTS [OUT_DIR]" >&2
+  echo "usage: scripts/poster-bench.sh [--scene city|FILE] DEMO SIZES EFFECTS [OUT_DIR]" >&2
   exit 2
 fi
 demo=$1
@@ -53,8 +55,12 @@ case "$scene" in
     scene_args=(--scene "$city")
     ;;
   *)
-    echo "poster-bench.sh: --scene must be showcase or city, got $scene" >&2
-    exit 2
+    if [ ! -f "$scene" ]; then
+      echo "poster-bench.sh: --scene must be showcase, city or a glTF file, got $scene" >&2
+      exit 2
+    fi
+    echo "scene: $scene"
+    scene_args=(--scene "$scene")
     ;;
 esac
 echo "uptime: $(uptime)"
