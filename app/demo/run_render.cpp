@@ -196,7 +196,8 @@ EffectOutcome draw_effect(plan::Effect effect, const RenderSetup& setup, RunFile
     const Session& session = *setup.session;
     const std::string name(plan::to_string(effect));
     if (request.verbose && effect == plan::Effect::Recursion) { // where the recursion ends (view_tree.hpp)
-        const auto end = plan::recursion_end_note(session.cameras->main.pair, session.scene.world_bounds,
+        const auto end = plan::recursion_end_note(plan::cameras_for(effect, *session.cameras).main.pair,
+                                                  session.scene.world_bounds,
                                                   plan::instance_boxes(session.scene), setup.options.recursion_links,
                                                   setup.options.recursion_depth, request.width_px, request.height_px);
         if (end && *end) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <string_view>
 
 namespace plan {
@@ -126,6 +127,43 @@ frustum::Result<frustum::MatrixPair<float>> camera_pair(const scene::Camera& cam
     return frustum::compose(*projection, view);
 }
 
+frustum::Result<frustum::MatrixPair<float>> perspective_twin(const scene::Camera& camera, const scene::Bounds& bounds,
+                                                             float image_aspect) {
+    const glm::vec3 position(camera.camera_to_world[3]);
+    const glm::vec3 forward = -glm::vec3(camera.camera_to_world[2]); // glTF cameras look down -Z
+    const glm::vec3 centre = (bounds.min + bounds.max) * 0.5f;
+    const float centre_depth_m = glm::dot(centre - position, forward);
+    const float distance_m = camera.ymag / std::tan(kFramingFovyRad * 0.5f);
+    scene::Camera twin = camera;
+    twin.name = camera.name + " (perspective twin)";
+    twin.kind = scene::Camera::Kind::Perspective;
+    twin.yfov_rad = kFramingFovyRad;
+    const glm::vec3 eye = position + forward * (centre_depth_m - distance_m);
+    twin.camera_to_world[3] = glm::vec4(eye, 1.0f);
+    float far_m = 0.0f, nearest_m = std::numeric_limits<float>::max();
+    for (const glm::vec3& corner : scene::corners(bounds)) {
+        far_m = std::max(far_m, glm::length(corner - eye));
+        nearest_m = std::min(nearest_m, glm::dot(corner - eye, forward));
+    }
+    far_m = std::max(kDerivedFarMargin * far_m, distance_m);
+    twin.zfar_m = far_m;
+    twin.znear_m = std::max(far_m / kMaxFarPerNear, nearest_m * 0.5f);
+    auto pair = camera_pair(twin, image_aspect);
+    if (!pair) {
+        return pair.take_error_in("plan::perspective_twin()");
+    }
+    return pair;
+}
+
+Cameras cameras_for(Effect effect, const Cameras& cameras) {
+    if (!effect_needs_finite_eye(effect) || !cameras.perspective_twin) {
+        return cameras;
+    }
+    Cameras out = cameras;
+    out.main = *cameras.perspective_twin;
+    return out;
+}
+
 frustum::Result<frustum::MatrixPair<float>> framing_camera(const scene::Bounds& bounds,
                                                            const glm::vec3& from_direction, float aspect) {
     const glm::vec3 center = (bounds.min + bounds.max) * 0.5f;
@@ -185,6 +223,21 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
         return main.take_error();
     }
     const std::string main_name = from_file ? scene.cameras[static_cast<std::size_t>(main_camera)].name : "framing";
+    std::optional<NamedCamera> twin;
+    std::optional<std::string> twin_note;
+    if (from_file && file_camera->kind == scene::Camera::Kind::Orthographic) {
+        auto pair = perspective_twin(*file_camera, scene.world_bounds, aspect);
+        if (!pair) {
+            return pair.take_error();
+        }
+        twin = NamedCamera{main_name + " (perspective twin)", *pair};
+        const glm::vec3 eye = *frustum::eye_point(*pair);
+        twin_note = "camera '" + main_name +
+                    "' is orthographic: curved, lens, nonaffine, portal and recursion need a finite eye and draw "
+                    "with its perspective twin (the same axis and up, yfov 45 deg, the eye at (" +
+                    number_text(eye.x) + ", " + number_text(eye.y) + ", " + number_text(eye.z) +
+                    ") m, showing the same height at the scene's centre)";
+    }
 
     const int overview_index = find_by_name(scene, "overview");
     if (overview_index >= 0 && overview_index != main_camera) {
@@ -192,7 +245,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
         if (!overview) {
             return overview.take_error();
         }
-        return Cameras{{main_name, *main}, {"overview", *overview}, far_note};
+        return Cameras{{main_name, *main}, {"overview", *overview}, far_note, twin, twin_note};
     }
     // Automatic: frame the scene together with the main camera's eye (when
     // finite: an orthographic eye is at infinity).
@@ -202,7 +255,7 @@ frustum::Result<Cameras> make_cameras(const scene::Scene& scene, int main_camera
     if (!overview) {
         return overview.take_error();
     }
-    return Cameras{{main_name, *main}, {"automatic overview", *overview}, far_note};
+    return Cameras{{main_name, *main}, {"automatic overview", *overview}, far_note, twin, twin_note};
 }
 
 } // namespace plan

@@ -3,6 +3,8 @@
 // framing the scene when it has none.
 #pragma once
 
+#include "plan/effect.hpp"
+
 #include <frustum/matrix_pair.hpp>
 #include <frustum/result.hpp>
 #include <scene/scene.hpp>
@@ -50,7 +52,26 @@ struct Cameras {
     // Set when the file camera's far plane was replaced (derived_far_m()):
     // which far it had and which it got, for main to print.
     std::optional<std::string> far_note;
+    // Set when main is orthographic: a perspective camera with its view
+    // (perspective_twin()), which the effects that need a finite eye draw
+    // with (cameras_for()), and what twin_note says about it.
+    std::optional<NamedCamera> perspective_twin;
+    std::optional<std::string> twin_note;
 };
+
+// A perspective camera that sees what the orthographic `camera` sees at the
+// depth of the centre of `bounds`: the same axis and up, the framing
+// cameras' vertical field of view (45 degrees), the eye on the axis at the
+// distance where that field of view is 2 ymag high at the centre's depth
+// (so the centre's plane looks the same); near and far enclose `bounds`
+// (far 1.05 x the farthest corner, near the nearest corner's depth / 2,
+// at least far / kMaxFarPerNear).
+frustum::Result<frustum::MatrixPair<float>> perspective_twin(const scene::Camera& camera, const scene::Bounds& bounds,
+                                                             float image_aspect);
+
+// `cameras`, with main replaced by the perspective twin when `effect`
+// needs a finite eye (effect_needs_finite_eye()) and main has a twin.
+Cameras cameras_for(Effect effect, const Cameras& cameras);
 
 // The largest far / near the effects take from a file camera
 // (docs/any-scene.md, "Far planes"). A ZeroToOne perspective's far plane

@@ -20,6 +20,14 @@ enum class Effect {
     Recursion, // two facing mirrors (or a portal facing itself) seen recursively, --depth levels
 };
 
+// The effects built from the camera's eye (the near plane's frame, the
+// mirror's fit, the portal's and the recursion's placement): an
+// orthographic camera, whose eye is at infinity, has none.
+inline constexpr bool effect_needs_finite_eye(Effect effect) {
+    return effect == Effect::Curved || effect == Effect::Lens || effect == Effect::NonAffine ||
+           effect == Effect::Portal || effect == Effect::Recursion;
+}
+
 inline constexpr Effect kAllEffects[] = {Effect::Plain, Effect::Mirror, Effect::Tiles, Effect::Frustum,
                                         Effect::Curved, Effect::Lens,   Effect::NonAffine,
                                         Effect::Portal, Effect::Recursion};

@@ -202,7 +202,10 @@ frustum::Status Renderer::move_mirror(const glm::mat4& motion, const std::vector
 }
 
 frustum::Status Renderer::draw(plan::Effect effect, const PassContext& ctx, const gl::OffscreenTarget& frame,
-                               const plan::Cameras& cameras, const RenderOptions& options) const {
+                               const plan::Cameras& given, const RenderOptions& options) const {
+    // An orthographic main camera has no eye: the effects built from one
+    // draw with its perspective twin (camera.hpp).
+    const plan::Cameras cameras = plan::cameras_for(effect, given);
     std::optional<FogDraw> fog; // the plain and mirror effects draw it; the others leave it out
     if (options.fog) {
         fog = FogDraw{&fog_pass_, fit_fog(*options.fog, bounds_, ctx.clear_color),

@@ -50,6 +50,9 @@ std::optional<OpenFailure> Session::open(const SessionSettings& settings, const 
     if (made->far_note) {
         note(*made->far_note);
     }
+    if (made->twin_note) {
+        note(*made->twin_note);
+    }
     // After the cameras (they frame the model), before the renderer (it draws the mirror placed here).
     effects = plan::resolve_effects(params, scene, &made->main.pair);
     if (hooks.cameras_at_size) {

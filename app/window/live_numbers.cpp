@@ -32,8 +32,11 @@ double inverse_residual(const frustum::MatrixPair<float>& pair) {
 }
 
 LiveNumbers live_numbers(const Frame& frame, const scene::Scene& scene) {
-    LiveNumbers numbers{frame.cameras.main.pair, 0.0, {}, {}, std::nullopt, {}};
-    const frustum::MatrixPair<float>& camera = frame.cameras.main.pair;
+    // The camera the frame's effect draws with (an orthographic main's
+    // perspective twin for the effects built from an eye).
+    const plan::Cameras cameras = plan::cameras_for(frame.effect, frame.cameras);
+    LiveNumbers numbers{cameras.main.pair, 0.0, {}, {}, std::nullopt, {}};
+    const frustum::MatrixPair<float>& camera = cameras.main.pair;
     numbers.residual = inverse_residual(camera);
     numbers.planes = frustum::planes(camera);
     numbers.points = frustum::key_points(camera);

@@ -169,6 +169,44 @@ TEST_CASE("an orthographic glTF camera keeps its aspect in a 16:9 image") {
     CHECK(width_px == height_px);
 }
 
+TEST_CASE("an orthographic camera: the effects built from an eye draw with its perspective twin") {
+    const scene::Scene s = load_feature("orthographic.gltf");
+    const auto cameras = cameras_of(s, 160, 90);
+    REQUIRE(cameras.perspective_twin);
+    REQUIRE(cameras.twin_note);
+    CHECK_FALSE(frustum::eye_point(cameras.main.pair)); // the file's camera stays main
+    CHECK(frustum::eye_point(cameras.perspective_twin->pair));
+    for (plan::Effect effect : plan::kAllEffects) {
+        INFO(plan::to_string(effect));
+        const plan::Cameras used = plan::cameras_for(effect, cameras);
+        CHECK(frustum::eye_point(used.main.pair).has_value() == plan::effect_needs_finite_eye(effect));
+    }
+    auto r = render_test::make_any_renderer(s);
+    REQUIRE(r);
+    const auto o = render_test::options(160, 90);
+    // Rows of the square above the middle row, in column 80 (22.5 when 2 ymag fill 90 rows).
+    const auto upper_half_px = [](const image::Image& image) {
+        int rows = 0;
+        for (int y = 44; y >= 0 && !gl_test::near(image::pixel_at(image, 80, y), sky(), 2); --y) {
+            ++rows;
+        }
+        return rows;
+    };
+    CHECK(upper_half_px(r->render(plan::Effect::Plain, cameras, o)) == doctest::Approx(22.5).epsilon(0.1));
+    for (plan::Effect effect : plan::kAllEffects) {
+        if (!plan::effect_needs_finite_eye(effect)) {
+            continue;
+        }
+        INFO(plan::to_string(effect));
+        const image::Image picture = r->render(effect, cameras, o); // refused before the twin
+        CHECK(picture.width == 160);
+        if (effect == plan::Effect::NonAffine || effect == plan::Effect::Portal || effect == plan::Effect::Recursion) {
+            // The twin shows the plane of the scene's centre, the square's, as the orthographic camera does.
+            CHECK(upper_half_px(picture) == doctest::Approx(22.5).epsilon(0.15));
+        }
+    }
+}
+
 TEST_CASE("the showcase's lens disc is glass in every effect that draws it") {
     // Three versions of the showcase: the disc as it is (BLEND), made opaque,
     // and shrunk to nothing. Where the opaque disc shows, the glass one lies

@@ -91,7 +91,7 @@ TEST_CASE("texture orientation: red top left on the feature square and on the cu
         const auto view = frustum::look_at<float>(glm::vec3(0, 0, 3.5f), glm::vec3(0), glm::vec3(0, 1, 0));
         REQUIRE_MESSAGE(view.ok(), view.error());
         const frustum::MatrixPair<float> pair = frustum::compose(*projection, *view);
-        plan::Cameras cameras{{"front", pair}, {"overview", pair}, std::nullopt};
+        plan::Cameras cameras{{"front", pair}, {"overview", pair}, std::nullopt, std::nullopt, std::nullopt};
         auto renderer = render::Renderer::create(*env->context, env->fn, *s);
         REQUIRE_MESSAGE(renderer.ok(), renderer.error());
         const auto picture = renderer->render(plan::Effect::Plain, cameras, render_test::options(kSidePx, kSidePx));

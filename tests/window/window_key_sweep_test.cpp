@@ -2,8 +2,8 @@
 // lists) on every glTF sample and the showcase, under xvfb-run: the window
 // keeps running through all of them (an effect that does not apply to the
 // scene or camera keeps the previous one and says why) and ends with Esc,
-// exit status 0. Also from an orthographic camera, where the lens,
-// curved mirror and non-affine effects cannot be drawn. And on the
+// exit status 0. Also from an orthographic camera, where the effects
+// built from an eye draw with its perspective twin. And on the
 // showcase, each key changes exactly the setting its table entry names,
 // read back from the state line the window writes after every frame
 // (FRUSTUM_WINDOW_STATE, window::state_line()).
