@@ -280,9 +280,13 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
             continue;
         }
         if (several) {
-            images.emplace_back(name, with_caption(*outcome.picture,
-                                                   effect_caption(effect, setup.options, session.cameras->main.name,
-                                                                  session.cameras->main.pair, session.scene)));
+            const plan::NamedCamera drawn_with = plan::cameras_for(effect, *session.cameras).main;
+            std::vector<CaptionLine> caption =
+                effect_caption(effect, setup.options, drawn_with.name, drawn_with.pair, session.scene);
+            if (effect != plan::Effect::Plain && drawn_with.name != session.cameras->main.name) {
+                caption.push_back({"from " + drawn_with.name});
+            }
+            images.emplace_back(name, with_caption(*outcome.picture, caption));
         }
     }
     g_activity = "writing the contact sheet";

@@ -86,21 +86,32 @@ frustum::Plane<float> mirror_plane(const scene::MirrorRect& mirror) {
     return frustum::Plane<float>(glm::vec4(normal, -glm::dot(normal, mirror.corner)));
 }
 
+std::optional<frustum::CropRect<float>> whole_pixels(const frustum::CropRect<float>& r) {
+    const float x0 = std::max(0.0f, std::floor(r.x)), y0 = std::max(0.0f, std::floor(r.y));
+    const float x1 = std::min(r.full_width, std::ceil(r.x + r.width));
+    const float y1 = std::min(r.full_height, std::ceil(r.y + r.height));
+    if (!(x1 > x0 && y1 > y0)) {
+        return std::nullopt;
+    }
+    return frustum::CropRect<float>{x0, y0, x1 - x0, y1 - y0, r.full_width, r.full_height};
+}
+
+PixelRect pixel_rect(const frustum::CropRect<float>& whole) {
+    return {static_cast<int>(whole.x), static_cast<int>(whole.y), static_cast<int>(whole.width),
+            static_cast<int>(whole.height)};
+}
+
 std::optional<PixelRect> pixels_seen(const frustum::MatrixPair<float>& camera, const std::vector<glm::vec3>& polygon,
                                      int width_px, int height_px) {
     const auto seen = frustum::screen_rect(camera, polygon, static_cast<float>(width_px), static_cast<float>(height_px));
     if (!seen || !*seen) {
         return std::nullopt;
     }
-    const frustum::CropRect<float>& r = **seen;
-    const int x0 = std::clamp(static_cast<int>(std::floor(r.x)), 0, width_px);
-    const int y0 = std::clamp(static_cast<int>(std::floor(r.y)), 0, height_px);
-    const int x1 = std::clamp(static_cast<int>(std::ceil(r.x + r.width)), 0, width_px);
-    const int y1 = std::clamp(static_cast<int>(std::ceil(r.y + r.height)), 0, height_px);
-    if (x1 <= x0 || y1 <= y0) {
+    const auto whole = whole_pixels(**seen);
+    if (!whole) {
         return std::nullopt;
     }
-    return PixelRect{x0, y0, x1 - x0, y1 - y0};
+    return pixel_rect(*whole);
 }
 
 std::optional<PixelRect> mirror_screen_rect(const scene::MirrorRect& mirror, const frustum::MatrixPair<float>& camera,

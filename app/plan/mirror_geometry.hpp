@@ -4,6 +4,7 @@
 
 #include "plan/effect.hpp"
 
+#include <frustum/crop.hpp>
 #include <frustum/matrix_pair.hpp>
 #include <frustum/plane.hpp>
 #include <frustum/result.hpp>
@@ -23,6 +24,14 @@ struct PixelRect {
 // The mirror's plane, unit normal normalize(cross(a1, a2)): positive on the
 // reflecting side (scene.hpp), which is where the eye must be.
 frustum::Plane<float> mirror_plane(const scene::MirrorRect& mirror);
+
+// The smallest rectangle of whole pixels holding `r`, inside its image
+// (floor / ceil, clamped to full_width x full_height); empty when no pixel
+// is left.
+std::optional<frustum::CropRect<float>> whole_pixels(const frustum::CropRect<float>& r);
+
+// A rectangle of whole pixels (whole_pixels()) as a PixelRect.
+PixelRect pixel_rect(const frustum::CropRect<float>& whole);
 
 // The whole pixels of a width_px x height_px image that `camera` sees of a
 // planar convex polygon: frustum::screen_rect() (the polygon clipped by the

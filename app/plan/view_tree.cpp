@@ -1,5 +1,7 @@
 #include "plan/view_tree.hpp"
 
+#include "plan/mirror_geometry.hpp"
+
 #include <frustum/mirror.hpp>
 #include <frustum/portal.hpp>
 #include <frustum/queries.hpp>
@@ -11,17 +13,6 @@
 
 namespace plan {
 namespace {
-
-// The smallest whole-pixel rectangle holding `r` (floor / ceil, inside the image).
-std::optional<frustum::CropRect<float>> whole_pixels(const frustum::CropRect<float>& r) {
-    const float x0 = std::max(0.0f, std::floor(r.x)), y0 = std::max(0.0f, std::floor(r.y));
-    const float x1 = std::min(r.full_width, std::ceil(r.x + r.width));
-    const float y1 = std::min(r.full_height, std::ceil(r.y + r.height));
-    if (!(x1 > x0 && y1 > y0)) {
-        return std::nullopt;
-    }
-    return frustum::CropRect<float>{x0, y0, x1 - x0, y1 - y0, r.full_width, r.full_height};
-}
 
 // The node's eye is strictly on the plane's positive side (a perspective eye only).
 bool eye_in_front(const frustum::MatrixPair<float>& pair, const frustum::Plane<float>& plane) {

@@ -23,15 +23,11 @@ struct ViewPart {
     glm::mat4 surface_matrix{1.0f};
 };
 
-plan::PixelRect whole_pixels(const frustum::CropRect<float>& r) {
-    return {static_cast<int>(r.x), static_cast<int>(r.y), static_cast<int>(r.width), static_cast<int>(r.height)};
-}
-
 frustum::Result<std::vector<ViewPart>> view_parts(const std::vector<plan::ViewNode>& nodes, const FrameWindow& window) {
     std::vector<ViewPart> parts(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const plan::ViewNode& node = nodes[i];
-        const plan::PixelRect rect = whole_pixels(node.rect);
+        const plan::PixelRect rect = plan::pixel_rect(node.rect); // whole pixels (plan_view_tree())
         parts[i].part = intersect(rect, window.rect);
         if (!parts[i].part) {
             continue;
