@@ -283,7 +283,7 @@ std::variant<RenderRun, Failure> render_into_dir(const RenderRequest& request, c
             const plan::NamedCamera drawn_with = plan::cameras_for(effect, *session.cameras).main;
             std::vector<CaptionLine> caption =
                 effect_caption(effect, setup.options, drawn_with.name, drawn_with.pair, session.scene);
-            if (effect != plan::Effect::Plain && drawn_with.name != session.cameras->main.name) {
+            if (plan::effect_needs_finite_eye(effect) && session.cameras->perspective_twin) {
                 caption.push_back({"from " + drawn_with.name});
             }
             images.emplace_back(name, with_caption(*outcome.picture, caption));

@@ -24,6 +24,9 @@ frustum::Result<Frame> make_frame(const ViewerState& state, const plan::Cameras&
             return pair.take_error();
         }
         frame.cameras.main = {"orbit", *pair};
+        // The twin was the file camera's; the orbit camera is perspective itself.
+        frame.cameras.perspective_twin.reset();
+        frame.cameras.twin_note.reset();
     }
     frame.options.width_px = width_px;
     frame.options.height_px = height_px;

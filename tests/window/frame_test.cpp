@@ -39,6 +39,23 @@ TEST_CASE("with no camera input the frame uses the scene's main camera pair exac
     CHECK_FALSE(orbiting->text.empty());
 }
 
+TEST_CASE("an orbit replaces an orthographic camera's perspective twin too") {
+    const scene::Scene& scene = render_test::showcase();
+    const plan::Cameras shown = render_test::showcase_cameras();
+    plan::Cameras cameras = shown;
+    cameras.perspective_twin = plan::NamedCamera{"main (perspective twin)", shown.overview.pair};
+    window::ViewerState state;
+    state.effect = plan::Effect::Lens;
+    const auto still = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
+    REQUIRE_MESSAGE(still.ok(), still.error());
+    CHECK(same(plan::cameras_for(plan::Effect::Lens, still->cameras).main.pair, shown.overview.pair));
+    state.orbit = window::orbit_from_pair(shown.main.pair, scene.world_bounds);
+    const auto orbiting = window::make_frame(state, cameras, {}, scene.world_bounds, 256, 144);
+    REQUIRE_MESSAGE(orbiting.ok(), orbiting.error());
+    CHECK_FALSE(orbiting->cameras.perspective_twin.has_value());
+    CHECK(plan::cameras_for(plan::Effect::Lens, orbiting->cameras).main.name == "orbit");
+}
+
 TEST_CASE("tile counts are capped at one pixel per tile") {
     window::ViewerState state;
     state.tile_columns = 16;
